@@ -1,0 +1,63 @@
+#include "GroundTruthWriter.h"
+
+#include <lvfusion/simulation/GroundTruth.h>
+#include <mrpt/core/format.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <cmath>
+
+namespace lvf::apps
+{
+GroundTruthWriter::GroundTruthWriter(
+	lvf::common::StagedOutputFiles& files, const std::string& name,
+	bool writeDepth)
+	: m_files(files), m_name(name), m_writeDepth(writeDepth)
+{
+	m_poses.open(files.stage(name + "_gt_poses.txt"));
+	m_poses << "# ground-truth robot poses: frame timestamp[s] x[m] y[m] yaw[rad]\n";
+	m_truth.open(files.stage(name + "_truth_scans.csv"));
+}
+
+void GroundTruthWriter::add(
+	const lvf::simulation::CStereoLaserSimulator::Frame& f)
+{
+	m_poses << mrpt::format(
+		"%zu %.6f %.6f %.6f %.6f\n", f.index,
+		mrpt::Clock::toDouble(f.timestamp), f.truePose.x(), f.truePose.y(),
+		f.truePose.phi());
+
+	if (f.index == 0)
+	{
+		m_truth << "frame,timestamp";
+		for (size_t i = 0; i < f.truthScan.size(); i++)
+			m_truth << mrpt::format(",b%.2f", mrpt::RAD2DEG(f.scan->getScanAngle(i)));
+		m_truth << "\n";
+	}
+	m_truth << f.index << mrpt::format(",%.6f", mrpt::Clock::toDouble(f.timestamp));
+	for (float r : f.truthScan)
+		m_truth << (std::isfinite(r) ? mrpt::format(",%.4f", r) : std::string(",inf"));
+	m_truth << "\n";
+
+	if (m_writeDepth)
+		cv::imwrite(
+			m_files.stage(mrpt::format("%s_depth/%06zu.pfm", m_name.c_str(), f.index)),
+			f.leftDepth);
+}
+
+void GroundTruthWriter::writeObstacleMap(const lvf::simulation::World& world)
+{
+	const auto grid = lvf::simulation::obstacleGrid(world);
+	mrpt::io::CFileGZOutputStream out(m_files.stage(m_name + "_obstacles.gridmap.gz"));
+	mrpt::serialization::archiveFrom(out) << grid;
+	grid.saveAsBitmapFile(m_files.stage(m_name + "_obstacles.png"));
+}
+
+void GroundTruthWriter::close()
+{
+	m_poses.close();
+	m_truth.close();
+}
+
+}  // namespace lvf::apps

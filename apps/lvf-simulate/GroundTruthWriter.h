@@ -1,0 +1,36 @@
+#pragma once
+// The ground truth lvf-simulate writes beside its rawlog (all openable by a
+// person or a script; formats documented in the README):
+//   NAME_gt_poses.txt          frame, timestamp, true x y yaw
+//   NAME_truth_scans.csv       per frame, the truth scan of every laser bearing
+//   NAME_obstacles.gridmap.gz  robot-band obstacles, COccupancyGridMap2D
+//   NAME_obstacles.png         the same as an image
+//   NAME_depth/NNNNNN.pfm      left-image depth [m] (with --depth)
+
+#include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/simulation/CStereoLaserSimulator.h>
+
+#include <fstream>
+#include <string>
+
+namespace lvf::apps
+{
+class GroundTruthWriter
+{
+   public:
+	GroundTruthWriter(
+		lvf::common::StagedOutputFiles& files, const std::string& name,
+		bool writeDepth);
+
+	void add(const lvf::simulation::CStereoLaserSimulator::Frame& frame);
+	void writeObstacleMap(const lvf::simulation::World& world);
+	void close();
+
+   private:
+	lvf::common::StagedOutputFiles& m_files;
+	std::string m_name;
+	bool m_writeDepth;
+	std::ofstream m_poses, m_truth;
+};
+
+}  // namespace lvf::apps

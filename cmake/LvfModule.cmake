@@ -1,0 +1,35 @@
+# Helpers shared by every module and app: one place for warnings and sanitizers.
+
+function(lvf_set_compile_options target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra)
+  if(LVF_WARNINGS_AS_ERRORS)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(LVF_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+# lvf_add_module(NAME <name> SOURCES ... DEPENDS ...)
+# Builds libs/<name> as the static library lvfusion-<name> (alias lvf::<name>) with
+# its public headers under include/lvfusion/<name>/.
+function(lvf_add_module)
+  cmake_parse_arguments(M "" "NAME" "SOURCES;DEPENDS" ${ARGN})
+  set(target lvfusion-${M_NAME})
+  add_library(${target} STATIC ${M_SOURCES})
+  add_library(lvf::${M_NAME} ALIAS ${target})
+  target_include_directories(${target} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_link_libraries(${target} PUBLIC ${M_DEPENDS})
+  lvf_set_compile_options(${target})
+endfunction()
+
+# lvf_add_app(NAME <name> SOURCES ... DEPENDS ...)
+function(lvf_add_app)
+  cmake_parse_arguments(A "" "NAME" "SOURCES;DEPENDS" ${ARGN})
+  add_executable(${A_NAME} ${A_SOURCES})
+  target_link_libraries(${A_NAME} PRIVATE ${A_DEPENDS})
+  target_compile_definitions(${A_NAME} PRIVATE
+    LVF_SHARE_DIR="${LVF_SHARE_DIR}" LVF_SAMPLES_DIR="${LVF_SAMPLES_DIR}")
+  lvf_set_compile_options(${A_NAME})
+endfunction()

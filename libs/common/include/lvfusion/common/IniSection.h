@@ -1,0 +1,72 @@
+#pragma once
+// Strict reading of one INI section in MRPT's CConfigFile style.
+//
+// MRPT's read_double()/read_int() accept "abc" as 0 and ignore unknown keys;
+// for a user that means a typo silently falls back to a default. IniSection
+// parses every value completely, checks its range, remembers which keys were
+// read, and rejectUnknownKeys() then names any key nobody asked for.
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lvf::common
+{
+class IniSection
+{
+   public:
+	IniSection(const mrpt::config::CConfigFileBase& cfg, std::string section);
+
+	double real(
+		const std::string& key, double defaultValue,
+		double minValue = -1e300, double maxValue = 1e300);
+	int integer(
+		const std::string& key, int defaultValue, int minValue = -2147483647,
+		int maxValue = 2147483647);
+	bool flag(const std::string& key, bool defaultValue);
+	std::string text(const std::string& key, const std::string& defaultValue);
+	/** A whitespace- or comma-separated list of numbers, e.g. "0.1 -0.2 0". */
+	std::vector<double> reals(
+		const std::string& key, const std::vector<double>& defaultValue);
+
+	/** Throws InputError naming the first key in the section not read. */
+	void rejectUnknownKeys() const;
+
+	const std::string& section() const { return m_section; }
+	/** "file.ini" or "<memory>" when the config has no file. */
+	const std::string& sourceName() const { return m_source; }
+
+   private:
+	bool has(const std::string& key);
+	[[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+	const mrpt::config::CConfigFileBase& m_cfg;
+	std::string m_section;
+	std::string m_source;
+	std::set<std::string> m_readKeys;
+};
+
+/** Throws InputError naming the first section of `cfg` not in `known`. */
+void rejectUnknownSections(
+	const mrpt::config::CConfigFileBase& cfg,
+	const std::vector<std::string>& known);
+
+/** The file behind a config object, or "<memory>". */
+std::string configSourceName(const mrpt::config::CConfigFileBase& cfg);
+
+}  // namespace lvf::common
+
+namespace lvf::common
+{
+/** Writes `key = value  // comment` with the column widths every lvfusion
+ * option uses, so that --dump-config output lines up. */
+template <typename T>
+void writeOption(
+	mrpt::config::CConfigFileBase& cfg, const std::string& section,
+	const std::string& key, const T& value, const std::string& comment)
+{
+	cfg.write(section, key, value, 28, 14, comment);
+}
+}  // namespace lvf::common

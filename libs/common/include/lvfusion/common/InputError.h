@@ -1,0 +1,27 @@
+#pragma once
+// The one exception type for "the user gave us something we cannot use":
+// a bad file, key, value or record. Apps turn it into a single line on stderr
+// and exit status 2 (see AppMain.h); anything else is a bug in lvfusion.
+
+#include <stdexcept>
+#include <string>
+
+namespace lvf::common
+{
+class InputError : public std::runtime_error
+{
+   public:
+	/** @param source file name (or "--option" for command-line values)
+	 *  @param where  key, line or record inside the source, may be empty
+	 *  @param what   what is wrong, phrased for the user */
+	InputError(
+		const std::string& source, const std::string& where,
+		const std::string& what);
+
+	const std::string& source() const { return m_source; }
+
+   private:
+	std::string m_source;
+};
+
+}  // namespace lvf::common

@@ -1,0 +1,66 @@
+#pragma once
+// Writes MRPT rawlogs (gzip-compressed, as MRPT's own tools read them) in
+// either of MRPT's two layouts:
+//  - ActionsSensoryFrames: CActionCollection (odometry increment) followed by
+//    a CSensoryFrame per frame, what pf-localization and RawLogViewer's
+//    "maps" tools expect;
+//  - Observations: a flat, time-ordered sequence of CObservation objects,
+//    odometry as CObservationOdometry.
+
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mrpt::io
+{
+class CFileGZOutputStream;
+}
+
+namespace lvf::common
+{
+enum class RawlogFormat
+{
+	ActionsSensoryFrames,
+	Observations
+};
+
+/** "sf" / "obs" (as on lvf-* command lines); throws InputError otherwise. */
+RawlogFormat parseRawlogFormat(const std::string& name, const std::string& source);
+
+struct RawlogFrame
+{
+	mrpt::Clock::time_point timestamp;
+	/** Absolute odometry reading at `timestamp` (robot's own dead reckoning). */
+	mrpt::poses::CPose2D odometry;
+	/** Sensor observations of this frame, in time order. */
+	std::vector<mrpt::obs::CObservation::Ptr> observations;
+};
+
+class RawlogWriter
+{
+   public:
+	RawlogWriter(
+		const std::string& path, RawlogFormat format,
+		mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel =
+			{});
+	~RawlogWriter();
+
+	void append(const RawlogFrame& frame);
+	/** Flushes and closes; the destructor does this too. */
+	void close();
+
+	size_t framesWritten() const { return m_frames; }
+
+   private:
+	std::unique_ptr<mrpt::io::CFileGZOutputStream> m_out;
+	RawlogFormat m_format;
+	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
+	mrpt::poses::CPose2D m_lastOdometry;
+	size_t m_frames = 0;
+};
+
+}  // namespace lvf::common

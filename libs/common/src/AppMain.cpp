@@ -1,0 +1,66 @@
+#include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/InputError.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <unistd.h>
+
+namespace lvf::common
+{
+namespace
+{
+std::string firstLine(const std::string& s)
+{
+	const auto start = s.find_first_not_of("\n =");  // MRPT banners
+	const auto from = start == std::string::npos ? 0 : start;
+	const auto end = s.find('\n', from);
+	return s.substr(from, end == std::string::npos ? std::string::npos : end - from);
+}
+}  // namespace
+
+int runApp(const std::string& appName, const std::function<int()>& body)
+{
+	try
+	{
+		return body();
+	}
+	catch (const InputError& e)
+	{
+		std::cerr << appName << ": error: " << e.what() << std::endl;
+		return kExitBadInput;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << appName << ": internal error: " << firstLine(e.what())
+				  << std::endl;
+		return kExitInternalError;
+	}
+}
+
+namespace
+{
+class OneLineFailureOutput : public TCLAP::StdOutput
+{
+   public:
+	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
+	{
+		throw InputError("command line", e.argId(), e.error() + " (see --help)");
+	}
+};
+}  // namespace
+
+bool parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv)
+{
+	static OneLineFailureOutput output;	 // must outlive cmd
+	cmd.setOutput(&output);
+	return cmd.parse(argc, argv);
+}
+
+bool interactiveTerminal()
+{
+	const char* ci = std::getenv("CI");
+	return ::isatty(STDOUT_FILENO) && !(ci && *ci);
+}
+
+}  // namespace lvf::common

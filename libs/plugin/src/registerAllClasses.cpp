@@ -1,0 +1,12 @@
+#include <lvfusion/plugin/registerAllClasses.h>
+#include <lvfusion/simulation/CStereoLaserSimulator.h>
+#include <mrpt/rtti/CObject.h>
+
+namespace lvf
+{
+void registerAllClasses()
+{
+	// One line per class, as MRPT's own registerAllClasses.cpp files do.
+	mrpt::rtti::registerClass(CLASS_ID(lvf::simulation::CStereoLaserSimulator));
+}
+}  // namespace lvf

@@ -1,0 +1,58 @@
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/simulation/SimulatedOdometry.h>
+#include <mrpt/math/wrap2pi.h>
+#include <opencv2/core.hpp>
+
+#include <cmath>
+
+namespace lvf::simulation
+{
+using lvf::common::writeOption;
+
+void SimulatedOdometry::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	lvf::common::IniSection ini(source, section);
+	xyStdPerMetre = ini.real("xy_std_per_m", xyStdPerMetre, 0, 1);
+	yawStdPerRadian = ini.real("yaw_std_per_rad", yawStdPerRadian, 0, 1);
+	yawStdPerMetre = ini.real("yaw_std_per_m", yawStdPerMetre, 0, 1);
+	ini.rejectUnknownKeys();
+}
+
+void SimulatedOdometry::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	writeOption(c, s, "xy_std_per_m", xyStdPerMetre, "position noise per metre driven [m/m]");
+	writeOption(c, s, "yaw_std_per_rad", yawStdPerRadian, "heading noise per radian turned [rad/rad]");
+	writeOption(c, s, "yaw_std_per_m", yawStdPerMetre, "heading noise per metre driven [rad/m]");
+}
+
+SimulatedOdometry::SimulatedOdometry(const TOptions& options, uint64_t seed)
+	: m_options(options), m_seed(seed)
+{
+}
+
+mrpt::poses::CPose2D SimulatedOdometry::update(
+	const mrpt::poses::CPose2D& truePose)
+{
+	if (m_steps++ == 0)
+	{
+		m_lastTrue = m_reading = truePose;
+		return m_reading;
+	}
+	const mrpt::poses::CPose2D step = truePose - m_lastTrue;
+	const double dist = std::hypot(step.x(), step.y());
+	const double turn = std::abs(mrpt::math::wrapToPi(step.phi()));
+	cv::RNG rng(m_seed * 1000003ULL + m_steps);
+	const double xyStd = m_options.xyStdPerMetre * dist;
+	const double yawStd =
+		m_options.yawStdPerRadian * turn + m_options.yawStdPerMetre * dist;
+	const mrpt::poses::CPose2D noisyStep(
+		step.x() + rng.gaussian(xyStd), step.y() + rng.gaussian(xyStd),
+		step.phi() + rng.gaussian(yawStd));
+	m_reading = m_reading + noisyStep;
+	m_lastTrue = truePose;
+	return m_reading;
+}
+
+}  // namespace lvf::simulation
