@@ -51,6 +51,7 @@ WorldGeometry::WorldGeometry(const World& world)
 		p.half[1] = 0.5 * b.sizeY;
 		p.half[2] = 0.5 * b.sizeZ;
 		p.texture = SurfaceTexture(b.texture);
+		p.shiftFaces = b.texture.kind == TextureSpec::Kind::Noise;
 		m_boxes.push_back(p);
 		m_allBoxes.push_back(static_cast<int>(m_allBoxes.size()));
 	}
@@ -133,9 +134,12 @@ float WorldGeometry::albedoAt(
 	if (hit.box == RayHit::kFloor) return m_floorTexture.albedoAt(p.x(), p.y());
 	const PreparedBox& b = m_boxes[hit.box];
 	const Eigen::Vector3d q = toBoxFrame(b, p);
-	// Each face gets its own stretch of the texture so that opposite faces
-	// and neighbouring faces do not repeat one another.
-	const double faceShift = 7.31 * (2 * hit.axis + (hit.side > 0 ? 1 : 0));
+	// Each face gets its own stretch of a noise texture so that opposite and
+	// neighbouring faces do not repeat one another. Checkers stay aligned to
+	// the face centre (a square corner there), as a calibration target is.
+	const double faceShift = b.shiftFaces
+		? 7.31 * (2 * hit.axis + (hit.side > 0 ? 1 : 0))
+		: 0.0;
 	switch (hit.axis)
 	{
 		case 0: return b.texture.albedoAt(q.y() + faceShift, q.z());

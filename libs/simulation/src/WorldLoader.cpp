@@ -28,8 +28,9 @@ class Field
 	{
 		std::string where;
 		if (m_node.Mark().line >= 0)
-			where = "line " + std::to_string(m_node.Mark().line + 1) + ": ";
-		throw InputError(m_source, where + m_path, what);
+			where = "line " + std::to_string(m_node.Mark().line + 1);
+		if (!m_path.empty()) where += (where.empty() ? "" : ": ") + m_path;
+		throw InputError(m_source, where, what);
 	}
 
 	bool has(const std::string& key) const { return bool(m_node[key]); }

@@ -14,7 +14,7 @@ struct TextureSpec
 	{
 		None,  //!< uniform albedo
 		Noise,	//!< multi-octave value noise (natural, stereo-friendly)
-		Checker	 //!< squares of side `scale` (calibration targets)
+		Checker	 //!< squares of side `scale`, a corner at each face centre
 	};
 	Kind kind = Kind::Noise;
 	double albedo = 0.6;  //!< mean reflectance in [0, 1]

@@ -65,6 +65,7 @@ class WorldGeometry
 		double cx, cy, cz, cosYaw, sinYaw;
 		double half[3];
 		SurfaceTexture texture;
+		bool shiftFaces;
 	};
 	void intersectBox(
 		int index, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,

@@ -1,0 +1,132 @@
+// The simulated laser and the truth scan against hand-computed ranges.
+
+#include "TestWorlds.h"
+
+#include <gtest/gtest.h>
+#include <lvfusion/metrics/ScanMetrics.h>
+#include <lvfusion/simulation/GroundTruth.h>
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
+
+using namespace lvf::simulation;
+
+TEST(SimulatedLaser, RangeToAKnownWallIsExactWithoutNoise)
+{
+	// Wall face at x = 4, 10 m wide; the laser sits 0.15 m ahead of the robot
+	// centre, so along bearing b it measures (4 - 0.15) / cos(b) where the
+	// ray meets the wall (|y| <= 5) within the maximum range.
+	const World world = lvf::test::worldFromText(lvf::test::wallWorld(4.0));
+	const WorldGeometry geometry(world);
+	auto opt = lvf::test::noiseFreeOptions().laser;
+	const SimulatedLaser laser(opt);
+	const auto scan = laser.scan(geometry, mrpt::poses::CPose3D(), 1, {});
+	ASSERT_EQ(scan->getScanSize(), 181u);
+	for (size_t i = 0; i < scan->getScanSize(); i++)
+	{
+		const double b = scan->getScanAngle(i);
+		const double expected = (4.0 - opt.poseX) / std::cos(b);
+		const bool reachable = std::abs(b) < M_PI_2 - 1e-9 && expected < opt.maxRange &&
+			std::abs((4.0 - opt.poseX) * std::tan(b)) <= 5.0;
+		ASSERT_EQ(scan->getScanRangeValidity(i), reachable) << "ray " << i;
+		if (reachable)
+		{
+			EXPECT_NEAR(scan->getScanRange(i), expected, 1e-5) << "ray " << i;
+		}
+	}
+	EXPECT_NEAR(scan->getScanRange(90), 3.85, 1e-5);  // straight ahead
+}
+
+TEST(SimulatedLaser, NoiseHasTheConfiguredStandardDeviation)
+{
+	const World world = lvf::test::worldFromText(lvf::test::wallWorld(3.0));
+	const WorldGeometry geometry(world);
+	SimulatedLaser::TOptions opt;  // default: 5 cm
+	const SimulatedLaser laser(opt);
+	double sum = 0, sumSq = 0;
+	size_t n = 0;
+	for (uint64_t seed = 0; seed < 20; seed++)
+	{
+		const auto scan = laser.scan(geometry, mrpt::poses::CPose3D(), seed, {});
+		for (size_t i = 30; i <= 150; i++)	// bearings within +-60 deg
+		{
+			const double e = scan->getScanRange(i) -
+				(3.0 - opt.poseX) / std::cos(scan->getScanAngle(i));
+			sum += e;
+			sumSq += e * e;
+			n++;
+		}
+	}
+	const double mean = sum / n, stddev = std::sqrt(sumSq / n - mean * mean);
+	EXPECT_NEAR(mean, 0.0, 0.005);
+	EXPECT_NEAR(stddev, opt.noiseStd, 0.1 * opt.noiseStd);
+}
+
+TEST(TruthScan, MatchesHandComputedRangesAndIgnoresBoxesOutsideTheBand)
+{
+	// A box whose near face is at x = 1.5 and spans y in [-0.5, 0.5], floating
+	// at 0.5..1.0 m: inside the band [0.05, 1.2], above the laser plane.
+	// Two distractors: a box above the robot, and a flat mat below the band.
+	const World world = lvf::test::worldFromText(
+		"name: t\n"
+		"boxes:\n"
+		"  - {pose: [2, 0, 0], size: [1, 1, 0.5], elevation: 0.5}\n"
+		"  - {pose: [0, 2, 0], size: [1, 1, 0.5], elevation: 1.3}\n"
+		"  - {pose: [0, -2, 0], size: [1, 1, 0.03]}\n"
+		"path: {poses: [[0, 0, 0]]}\n");
+	const WorldGeometry geometry(world);
+	const auto opt = lvf::test::noiseFreeOptions();
+	const SimulatedLaser laser(opt.laser);
+	const mrpt::poses::CPose3D robot;
+	const auto scan = laser.scan(geometry, robot, 1, {});
+	const auto truth = truthScan(world, robot, *scan);
+
+	const double nearFace = 1.5 - opt.laser.poseX;	// 1.35 m from the laser
+	for (size_t i = 0; i < truth.size(); i++)
+	{
+		const double b = scan->getScanAngle(i);
+		const bool hitsBox = std::abs(nearFace * std::tan(b)) <= 0.5 && std::abs(b) < M_PI_2;
+		if (hitsBox)
+			EXPECT_NEAR(truth[i], nearFace / std::cos(b), 1e-5) << "bearing " << b;
+		else
+			EXPECT_TRUE(std::isinf(truth[i])) << "bearing " << b << " " << truth[i];
+	}
+	EXPECT_NEAR(truth[90], 1.35, 1e-6);
+	// The laser passes under the floating box: nothing at all ahead.
+	EXPECT_FALSE(scan->getScanRangeValidity(90));
+
+	// So bearing 0 is "hidden" in the DESIGN.md sense, if the camera sees it.
+	const SimulatedStereoRig rig(opt.stereo);
+	const auto stereo = rig.toObservation(
+		rig.render(geometry, robot, 1, false), mrpt::Clock::time_point());
+	const auto inView = lvf::metrics::bearingsInView(
+		*scan, truth, *stereo, {world.robot.obstacleMinHeight, world.robot.height}, 8.0);
+	const auto hidden = lvf::metrics::hiddenBearings(*scan, truth, inView);
+	EXPECT_TRUE(inView[90]);
+	EXPECT_TRUE(hidden[90]);
+	EXPECT_FALSE(inView[0]);  // straight to the right: outside a 70 deg camera
+}
+
+TEST(ObstacleGrid, OccupiesExactlyTheCellsUnderBandBoxes)
+{
+	const World world = lvf::test::worldFromText(
+		"name: g\n"
+		"boxes:\n"
+		"  - {pose: [1.0, 1.0, 0], size: [0.4, 0.2, 1]}\n"
+		"  - {pose: [3.0, 1.0, 45], size: [0.5, 0.5, 0.3], elevation: 2.0}\n"
+		"path: {poses: [[0, 0, 0]]}\n");
+	const auto grid = obstacleGrid(world, 0.05, 0.5);
+	size_t occupied = 0;
+	for (unsigned cy = 0; cy < grid.getSizeY(); cy++)
+		for (unsigned cx = 0; cx < grid.getSizeX(); cx++)
+			if (grid.getCell(cx, cy) < 0.5f)
+			{
+				occupied++;
+				EXPECT_NEAR(grid.idx2x(cx), 1.0, 0.2 + 0.025 + 1e-6);
+				EXPECT_NEAR(grid.idx2y(cy), 1.0, 0.1 + 0.025 + 1e-6);
+			}
+	// 0.4 x 0.2 m at 5 cm cells: 8 x 4 cells if aligned, at most 10 x 6.
+	EXPECT_GE(occupied, 8u * 4u);
+	EXPECT_LE(occupied, 10u * 6u);
+	EXPECT_GT(grid.getPos(3.0, 1.0), 0.5f);
+}

@@ -1,0 +1,184 @@
+// lvf-simulate as a user runs it: outputs MRPT's own tools can open, and one
+// clear line plus exit status 2 for every bad input, with nothing written.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kWorlds = std::string(LVF_SHARE_DIR) + "/worlds/";
+
+struct RunResult
+{
+	int status = -1;
+	std::string out, err;
+};
+
+std::string slurp(const fs::path& p)
+{
+	std::ifstream in(p);
+	std::stringstream s;
+	s << in.rdbuf();
+	return s.str();
+}
+
+class LvfSimulateCli : public ::testing::Test
+{
+   protected:
+	void SetUp() override
+	{
+		m_dir = fs::temp_directory_path() /
+			("lvf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+		fs::remove_all(m_dir);
+		fs::create_directories(m_dir);
+	}
+	void TearDown() override { fs::remove_all(m_dir); }
+
+	RunResult run(const std::string& program, const std::string& args) const
+	{
+		const fs::path out = m_dir / "stdout.txt", err = m_dir / "stderr.txt";
+		const std::string cmd = "cd '" + m_dir.string() + "' && '" + program + "' " +
+			args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
+		const int raw = std::system(cmd.c_str());
+		RunResult r;
+		r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+		r.out = slurp(out);
+		r.err = slurp(err);
+		return r;
+	}
+	RunResult simulate(const std::string& args) const { return run(LVF_SIMULATE_BIN, args); }
+
+	fs::path write(const std::string& name, const std::string& text) const
+	{
+		std::ofstream(m_dir / name) << text;
+		return m_dir / name;
+	}
+
+	fs::path m_dir;
+};
+
+/** label -> count, from rawlog-edit --info. */
+std::map<std::string, int> labelCounts(const std::string& info)
+{
+	std::map<std::string, int> counts;
+	const std::regex row(R"(Sensor \(Label/Occurs/Rate/Durat\.\)\s*:\s*(\S+)\s*/\s*(\d+))");
+	for (std::sregex_iterator it(info.begin(), info.end(), row), end; it != end; ++it)
+		counts[(*it)[1]] = std::stoi((*it)[2]);
+	return counts;
+}
+
+/** label -> class name, from rawlog-edit --list-timestamps. */
+std::map<std::string, std::string> labelClasses(const std::string& list)
+{
+	std::map<std::string, std::string> classes;
+	std::istringstream in(list);
+	std::string stamp, label, cls;
+	while (in >> stamp >> label >> cls) classes[label] = cls;
+	return classes;
+}
+
+}  // namespace
+
+TEST_F(LvfSimulateCli, WritesRawlogAndGroundTruthThatMrptToolsOpen)
+{
+	for (const auto& [format, sfYes] : {std::pair{"sf", "Yes"}, std::pair{"obs", "No"}})
+	{
+		const std::string outdir = std::string("out_") + format;
+		const auto r = simulate(
+			"--world " + kWorlds + "box_room.yaml --frames 3 --depth -q --format " +
+			format + " --outdir " + outdir);
+		ASSERT_EQ(r.status, 0) << r.err;
+		EXPECT_EQ(r.out, "");  // -q
+		const fs::path dir = m_dir / outdir;
+		for (const char* f :
+			 {"box_room.rawlog", "box_room_gt_poses.txt", "box_room_truth_scans.csv",
+			  "box_room_obstacles.gridmap.gz", "box_room_obstacles.png",
+			  "box_room_depth/000002.pfm"})
+			EXPECT_TRUE(fs::exists(dir / f)) << f;
+		for (const auto& e : fs::directory_iterator(m_dir))
+			EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos);
+
+		const auto info = run(LVF_RAWLOG_EDIT, "--info -i " + (dir / "box_room.rawlog").string());
+		ASSERT_EQ(info.status, 0) << info.err;
+		EXPECT_NE(info.out.find(std::string("Actions/SensoryFrame format       : ") + sfYes),
+				  std::string::npos) << info.out;
+		const auto counts = labelCounts(info.out);
+		EXPECT_EQ(counts.at("LASER"), 3);
+		EXPECT_EQ(counts.at("STEREO"), 3);
+		if (std::string(format) == "obs")
+		{
+			EXPECT_EQ(counts.at("ODOMETRY"), 3);
+		}
+
+		const auto list = run(LVF_RAWLOG_EDIT,
+			"--list-timestamps --text-file-output stamps.txt -i " + (dir / "box_room.rawlog").string());
+		ASSERT_EQ(list.status, 0) << list.err;
+		const auto classes = labelClasses(slurp(m_dir / "stamps.txt"));
+		EXPECT_EQ(classes.at("LASER"), "mrpt::obs::CObservation2DRangeScan");
+		EXPECT_EQ(classes.at("STEREO"), "mrpt::obs::CObservationStereoImages");
+	}
+	// 3 frames + header; truth scans have 181 bearings + frame + timestamp.
+	const std::string truth = slurp(m_dir / "out_sf/box_room_truth_scans.csv");
+	EXPECT_EQ(std::count(truth.begin(), truth.end(), '\n'), 4);
+	const std::string header = truth.substr(0, truth.find('\n'));
+	EXPECT_EQ(std::count(header.begin(), header.end(), ','), 182);
+}
+
+TEST_F(LvfSimulateCli, DumpConfigIsTheShippedSensorsIni)
+{
+	const auto r = simulate("--dump-config");
+	ASSERT_EQ(r.status, 0) << r.err;
+	// The shipped file is the dump plus a comment header; keys must agree.
+	auto keyLines = [](const std::string& text) {
+		std::vector<std::string> lines;
+		std::istringstream in(text);
+		for (std::string l; std::getline(in, l);)
+			if (!l.empty() && l[0] != '#' && l[0] != ';') lines.push_back(l);
+		return lines;
+	};
+	EXPECT_EQ(keyLines(r.out), keyLines(slurp(std::string(LVF_SHARE_DIR) + "/config/sensors.ini")));
+}
+
+TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
+{
+	const auto goodWorld = kWorlds + "two_cubes.yaml";
+	const auto badYaml = write("bad.yaml", "name: x\nboxes: [\n");
+	const auto unknownKey = write("typo.yaml", "boxes:\n  - {pose: [0,0,0], size: [1,1,1], heigth: 2}\npath: {poses: [[0,0,0]]}\n");
+	const auto negative = write("neg.yaml", "boxes:\n  - {pose: [0,0,0], size: [1,-2,1]}\npath: {poses: [[0,0,0]]}\n");
+	const auto badKey = write("key.ini", "[SimulatedLaser]\nmax_rnage = 8\n");
+	const auto badValue = write("value.ini", "[SimulatedStereoRig]\nfx = fast\n");
+	const auto badSection = write("section.ini", "[Lidar]\nmax_range = 8\n");
+	const auto badDist = write("dist.ini", "[SimulatedStereoRig]\ndist = 0.1 0.2\n");
+
+	const std::vector<std::tuple<std::string, std::string>> cases{
+		{"--world /nonexistent.yaml", "/nonexistent.yaml: cannot open world file"},
+		{"--world " + badYaml.string(), "bad.yaml: line 3: malformed YAML"},
+		{"--world " + unknownKey.string(), "typo.yaml: line 2: boxes[0].heigth: unknown key 'heigth'"},
+		{"--world " + negative.string(), "neg.yaml: line 2: boxes[0].size[1]: -2 is out of range"},
+		{"--world " + goodWorld + " --config /nonexistent.ini", "/nonexistent.ini: configuration file not found"},
+		{"--world " + goodWorld + " --config " + badKey.string(), "key.ini: [SimulatedLaser] max_rnage: unknown key"},
+		{"--world " + goodWorld + " --config " + badValue.string(), "value.ini: [SimulatedStereoRig] fx: 'fast' is not a number"},
+		{"--world " + goodWorld + " --config " + badSection.string(), "section.ini: [Lidar]: unknown section"},
+		{"--world " + goodWorld + " --config " + badDist.string(), "dist.ini: [SimulatedStereoRig] dist: needs 5 values"},
+		{"--world " + goodWorld + " --format bag", "--format: unknown rawlog format 'bag'"},
+		{"--world " + goodWorld + " --frames -3", "--frames: must be >= 0"},
+		{"--no-such-flag", "command line"},
+	};
+	for (const auto& [args, expected] : cases)
+	{
+		const auto r = simulate(args + " --outdir out");
+		EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+		EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+		EXPECT_EQ(r.err.rfind("lvf-simulate: error: ", 0), 0u) << r.err;
+		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
+	}
+}
