@@ -157,6 +157,9 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 	const auto badValue = write("value.ini", "[SimulatedStereoRig]\nfx = fast\n");
 	const auto badSection = write("section.ini", "[Lidar]\nmax_range = 8\n");
 	const auto badDist = write("dist.ini", "[SimulatedStereoRig]\ndist = 0.1 0.2\n");
+	const auto noEquals = write("noeq.ini", "[SimulatedLaser]\n; range\nmax_range 8\n");
+	const auto noSection = write("nosec.ini", "max_range = 8\n");
+	const auto badHeader = write("header.ini", "[SimulatedLaser\nmax_range = 8\n");
 
 	const std::vector<std::tuple<std::string, std::string>> cases{
 		{"--world /nonexistent.yaml", "/nonexistent.yaml: cannot open world file"},
@@ -168,6 +171,9 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 		{"--world " + goodWorld + " --config " + badValue.string(), "value.ini: [SimulatedStereoRig] fx: 'fast' is not a number"},
 		{"--world " + goodWorld + " --config " + badSection.string(), "section.ini: [Lidar]: unknown section"},
 		{"--world " + goodWorld + " --config " + badDist.string(), "dist.ini: [SimulatedStereoRig] dist: needs 5 values"},
+		{"--world " + goodWorld + " --config " + noEquals.string(), "noeq.ini: line 3: expected 'key = value' or '[section]', got 'max_range 8'"},
+		{"--world " + goodWorld + " --config " + noSection.string(), "nosec.ini: line 1: key outside of any [section]"},
+		{"--world " + goodWorld + " --config " + badHeader.string(), "header.ini: line 1: malformed section header"},
 		{"--world " + goodWorld + " --format bag", "--format: unknown rawlog format 'bag'"},
 		{"--world " + goodWorld + " --frames -3", "--frames: must be >= 0"},
 		{"--no-such-flag", "command line"},

@@ -140,7 +140,10 @@ TEST_P(RawlogRoundTrip, ObservationsReadBackUnchanged)
 
 INSTANTIATE_TEST_SUITE_P(
 	BothLayouts, RawlogRoundTrip,
-	::testing::Values(RawlogFormat::ActionsSensoryFrames, RawlogFormat::Observations));
+	::testing::Values(RawlogFormat::ActionsSensoryFrames, RawlogFormat::Observations),
+	[](const auto& info) {
+		return info.param == RawlogFormat::Observations ? "Observations" : "ActionsSensoryFrames";
+	});
 
 TEST(Determinism, SameSeedSameBitsOtherSeedOtherNoise)
 {

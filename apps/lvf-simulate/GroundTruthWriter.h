@@ -6,6 +6,7 @@
 //   NAME_obstacles.gridmap.gz  robot-band obstacles, COccupancyGridMap2D
 //   NAME_obstacles.png         the same as an image
 //   NAME_depth/NNNNNN.pfm      left-image depth [m] (with --depth)
+// (and main.cpp adds NAME_preview.png, see PreviewImage.h)
 
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>

@@ -2,8 +2,10 @@
 // pair + odometry) with ground truth beside it. See README.md, "lvf-simulate".
 
 #include "GroundTruthWriter.h"
+#include "PreviewImage.h"
 
 #include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/RawlogWriter.h>
@@ -13,7 +15,6 @@
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
@@ -34,10 +35,8 @@ CStereoLaserSimulator::TOptions loadOptions(const std::string& path)
 {
 	CStereoLaserSimulator::TOptions options;
 	if (path.empty()) return options;  // built-in defaults = config/sensors.ini
-	if (!mrpt::system::fileExists(path))
-		throw InputError(path, "", "configuration file not found");
-	mrpt::config::CConfigFile cfg(path);
-	options.loadFromConfigFile(cfg, "CStereoLaserSimulator");
+	options.loadFromConfigFile(
+		*lvf::common::openIniFile(path), "CStereoLaserSimulator");
 	return options;
 }
 
@@ -139,6 +138,9 @@ int run(int argc, char** argv)
 			*frame.scan, frame.truthScan, *frame.stereo, band, options.laser.maxRange);
 		const auto hidden =
 			lvf::metrics::hiddenBearings(*frame.scan, frame.truthScan, inView);
+		if (k == 0)
+			lvf::apps::writePreviewImage(
+				files.stage(name + "_preview.png"), frame, hidden, sim.world().robot);
 		summary.frames++;
 		summary.inView += static_cast<size_t>(std::count(inView.begin(), inView.end(), true));
 		summary.hidden += static_cast<size_t>(std::count(hidden.begin(), hidden.end(), true));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace lvf::common
@@ -14,6 +15,37 @@ std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 	if (const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg))
 		return f->getAssociatedFile();
 	return "<memory>";
+}
+
+std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
+{
+	std::ifstream in(path);
+	if (!in) throw InputError(path, "", "configuration file not found");
+	bool inSection = false;
+	int lineNumber = 0;
+	for (std::string line; std::getline(in, line);)
+	{
+		lineNumber++;
+		const auto first = line.find_first_not_of(" \t\r");
+		if (first == std::string::npos) continue;
+		const std::string t = line.substr(first);
+		if (t[0] == ';' || t[0] == '#' || t.rfind("//", 0) == 0 || t[0] == '@')
+			continue;
+		const std::string where = "line " + std::to_string(lineNumber);
+		if (t[0] == '[')
+		{
+			const auto close = t.find(']');
+			if (close == std::string::npos || close == 1)
+				throw InputError(path, where, "malformed section header '" + t + "'");
+			inSection = true;
+			continue;
+		}
+		if (t.find('=') == std::string::npos || t[0] == '=')
+			throw InputError(path, where, "expected 'key = value' or '[section]', got '" + t + "'");
+		if (!inSection)
+			throw InputError(path, where, "key outside of any [section]");
+	}
+	return std::make_unique<mrpt::config::CConfigFile>(path);
 }
 
 IniSection::IniSection(
@@ -33,11 +65,9 @@ void IniSection::fail(const std::string& key, const std::string& what) const
 	throw InputError(m_source, "[" + m_section + "] " + key, what);
 }
 
-double IniSection::real(
-	const std::string& key, double defaultValue, double minValue,
-	double maxValue)
+double IniSection::number(
+	const std::string& key, double minValue, double maxValue, bool integral)
 {
-	if (!has(key)) return defaultValue;
 	const std::string s = m_cfg.read_string(m_section, key, "");
 	double v = 0;
 	try
@@ -52,6 +82,7 @@ double IniSection::real(
 		fail(key, "'" + s + "' is not a number");
 	}
 	if (!std::isfinite(v)) fail(key, "'" + s + "' is not a finite number");
+	if (integral && v != std::floor(v)) fail(key, "'" + s + "' is not an integer");
 	if (v < minValue || v > maxValue)
 		fail(
 			key, mrpt::format(
@@ -60,29 +91,18 @@ double IniSection::real(
 	return v;
 }
 
+double IniSection::real(
+	const std::string& key, double defaultValue, double minValue,
+	double maxValue)
+{
+	return has(key) ? number(key, minValue, maxValue, false) : defaultValue;
+}
+
 int IniSection::integer(
 	const std::string& key, int defaultValue, int minValue, int maxValue)
 {
-	if (!has(key)) return defaultValue;
-	const std::string s = m_cfg.read_string(m_section, key, "");
-	long v = 0;
-	try
-	{
-		size_t used = 0;
-		v = std::stol(s, &used);
-		if (s.find_first_not_of(" \t", used) != std::string::npos)
-			throw std::invalid_argument(s);
-	}
-	catch (const std::exception&)
-	{
-		fail(key, "'" + s + "' is not an integer");
-	}
-	if (v < minValue || v > maxValue)
-		fail(
-			key, mrpt::format(
-					 "%s is out of range [%d, %d]", s.c_str(), minValue,
-					 maxValue));
-	return static_cast<int>(v);
+	return has(key) ? static_cast<int>(number(key, minValue, maxValue, true))
+					: defaultValue;
 }
 
 bool IniSection::flag(const std::string& key, bool defaultValue)

@@ -6,7 +6,10 @@
 // parses every value completely, checks its range, remembers which keys were
 // read, and rejectUnknownKeys() then names any key nobody asked for.
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
+
+#include <memory>
 
 #include <set>
 #include <string>
@@ -40,6 +43,10 @@ class IniSection
 
    private:
 	bool has(const std::string& key);
+	/** The value of `key`, parsed completely and range-checked. */
+	double number(
+		const std::string& key, double minValue, double maxValue,
+		bool integral);
 	[[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
 	const mrpt::config::CConfigFileBase& m_cfg;
@@ -52,6 +59,12 @@ class IniSection
 void rejectUnknownSections(
 	const mrpt::config::CConfigFileBase& cfg,
 	const std::vector<std::string>& known);
+
+/** Opens an INI file after checking what MRPT's parser silently skips: every
+ * line must be blank, a comment (; # //), an MRPT directive (@...), a
+ * "[section]" or a "key = value" inside a section. Throws InputError naming
+ * the file and line otherwise, or if the file cannot be read. */
+std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path);
 
 /** The file behind a config object, or "<memory>". */
 std::string configSourceName(const mrpt::config::CConfigFileBase& cfg);
