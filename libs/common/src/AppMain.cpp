@@ -53,6 +53,9 @@ class OneLineFailureOutput : public TCLAP::StdOutput
 bool parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv)
 {
 	static OneLineFailureOutput output;	 // must outlive cmd
+	// CmdLine news its default StdOutput and only deletes it if nobody
+	// replaced it: release it here, or every run leaks it.
+	delete cmd.getOutput();
 	cmd.setOutput(&output);
 	return cmd.parse(argc, argv);
 }

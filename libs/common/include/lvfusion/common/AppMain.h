@@ -19,7 +19,8 @@ constexpr int kExitBadInput = 2;
 
 int runApp(const std::string& appName, const std::function<int()>& body);
 
-/** Parses the command line; a bad argument becomes an InputError (one line,
+/** Parses the command line (once per CmdLine, which must still have its
+ * default output); a bad argument becomes an InputError (one line,
  * status 2) instead of TCLAP's multi-line usage dump. Returns false when the
  * program should just exit with success (--help, --version). */
 bool parseCommandLine(TCLAP::CmdLine& cmd, int argc, char** argv);
