@@ -1,6 +1,7 @@
 #pragma once
 // Small worlds and noise-free sensor settings shared by the tests.
 
+#include <lvfusion/model/PlanarSceneModel.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/WorldLoader.h>
 
@@ -35,6 +36,28 @@ inline std::string wallWorld(double wallX, const std::string& texture = "noise")
 		std::to_string(centre) + ", -5], height: 3, texture: " + texture +
 		"}\n"
 		"path: {poses: [[0, 0, 0]]}\n";
+}
+
+/** A 6 x 6 m room (walls 0.1 m thick, inner faces at x = -1, 5, y = -3, 3)
+ * around a robot at the origin looking along +x, plus `boxes`, YAML list
+ * items ("  - {pose: ...}\n"). */
+inline std::string roomWorld(const std::string& boxes)
+{
+	return "name: room\n"
+		   "walls:\n"
+		   "  - {from: [-1.05, -3.05], to: [5.05, -3.05]}\n"
+		   "  - {from: [5.05, -3.05], to: [5.05, 3.05]}\n"
+		   "  - {from: [5.05, 3.05], to: [-1.05, 3.05]}\n"
+		   "  - {from: [-1.05, 3.05], to: [-1.05, -3.05]}\n"
+		   "boxes:" + (boxes.empty() ? std::string(" []\n") : "\n" + boxes) +
+		"path: {poses: [[0, 0, 0]]}\n";
+}
+
+/** The model a perfect laser would give in roomWorld(): its inner faces. */
+inline lvf::model::PlanarSceneModel roomModel()
+{
+	return lvf::model::PlanarSceneModel(
+		{{{-1, -3}, {5, -3}}, {{5, -3}, {5, 3}}, {{5, 3}, {-1, 3}}, {{-1, 3}, {-1, -3}}});
 }
 
 }  // namespace lvf::test

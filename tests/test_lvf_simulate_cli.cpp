@@ -1,79 +1,19 @@
 // lvf-simulate as a user runs it: outputs MRPT's own tools can open, and one
 // clear line plus exit status 2 for every bad input, with nothing written.
 
-#include <gtest/gtest.h>
-#include <sys/wait.h>
+#include "CliTestSupport.h"
 
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <regex>
-#include <sstream>
-
-namespace fs = std::filesystem;
+using namespace lvf::test;
 
 namespace
 {
 const std::string kWorlds = std::string(LVF_SHARE_DIR) + "/worlds/";
 
-struct RunResult
-{
-	int status = -1;
-	std::string out, err;
-};
-
-std::string slurp(const fs::path& p)
-{
-	std::ifstream in(p);
-	std::stringstream s;
-	s << in.rdbuf();
-	return s.str();
-}
-
-class LvfSimulateCli : public ::testing::Test
+class LvfSimulateCli : public CliTest
 {
    protected:
-	void SetUp() override
-	{
-		m_dir = fs::temp_directory_path() /
-			("lvf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-		fs::remove_all(m_dir);
-		fs::create_directories(m_dir);
-	}
-	void TearDown() override { fs::remove_all(m_dir); }
-
-	RunResult run(const std::string& program, const std::string& args) const
-	{
-		const fs::path out = m_dir / "stdout.txt", err = m_dir / "stderr.txt";
-		const std::string cmd = "cd '" + m_dir.string() + "' && '" + program + "' " +
-			args + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-		const int raw = std::system(cmd.c_str());
-		RunResult r;
-		r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-		r.out = slurp(out);
-		r.err = slurp(err);
-		return r;
-	}
 	RunResult simulate(const std::string& args) const { return run(LVF_SIMULATE_BIN, args); }
-
-	fs::path write(const std::string& name, const std::string& text) const
-	{
-		std::ofstream(m_dir / name) << text;
-		return m_dir / name;
-	}
-
-	fs::path m_dir;
 };
-
-/** label -> count, from rawlog-edit --info. */
-std::map<std::string, int> labelCounts(const std::string& info)
-{
-	std::map<std::string, int> counts;
-	const std::regex row(R"(Sensor \(Label/Occurs/Rate/Durat\.\)\s*:\s*(\S+)\s*/\s*(\d+))");
-	for (std::sregex_iterator it(info.begin(), info.end(), row), end; it != end; ++it)
-		counts[(*it)[1]] = std::stoi((*it)[2]);
-	return counts;
-}
 
 /** label -> class name, from rawlog-edit --list-timestamps. */
 std::map<std::string, std::string> labelClasses(const std::string& list)
@@ -137,13 +77,6 @@ TEST_F(LvfSimulateCli, DumpConfigIsTheShippedSensorsIni)
 	const auto r = simulate("--dump-config");
 	ASSERT_EQ(r.status, 0) << r.err;
 	// The shipped file is the dump plus a comment header; keys must agree.
-	auto keyLines = [](const std::string& text) {
-		std::vector<std::string> lines;
-		std::istringstream in(text);
-		for (std::string l; std::getline(in, l);)
-			if (!l.empty() && l[0] != '#' && l[0] != ';') lines.push_back(l);
-		return lines;
-	};
 	EXPECT_EQ(keyLines(r.out), keyLines(slurp(std::string(LVF_SHARE_DIR) + "/config/sensors.ini")));
 }
 

@@ -113,7 +113,7 @@ TEST(RenderGeometry, CheckerCornersLandWhereMrptProjectsThemWithDistortion)
 	const auto calib = opt.stereoCamera();
 	const mrpt::poses::CPose3D left = opt.leftCameraPose();
 	const mrpt::poses::CPose3D right =
-		left + mrpt::poses::CPose3D(opt.baseline, 0, 0, 0, 0, 0);
+		left + opt.rightCameraPose();
 
 	size_t corners = 0;
 	double worst = 0;

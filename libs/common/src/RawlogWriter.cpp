@@ -61,6 +61,12 @@ void RawlogWriter::append(const RawlogFrame& frame)
 	++m_frames;
 }
 
+void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry)
+{
+	auto arch = mrpt::serialization::archiveFrom(*m_out);
+	arch << entry;
+}
+
 void RawlogWriter::close() { m_out->close(); }
 
 }  // namespace lvf::common

@@ -1,6 +1,7 @@
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <mrpt/vision/pinhole.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lvf::metrics
@@ -52,4 +53,69 @@ std::vector<bool> hiddenBearings(
 	return hidden;
 }
 
+}  // namespace lvf::metrics
+
+namespace lvf::metrics
+{
+namespace
+{
+double median(std::vector<float> v)
+{
+	if (v.empty()) return 0;
+	std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+	return v[v.size() / 2];
+}
+
+double rangeOf(const mrpt::obs::CObservation2DRangeScan& s, size_t i)
+{
+	return s.getScanRangeValidity(i) ? s.getScanRange(i) : s.maxRange;
+}
+}  // namespace
+
+void FusionScore::add(const FusionScore& o)
+{
+	inView += o.inView;
+	hidden += o.hidden;
+	recalled += o.recalled;
+	phantoms += o.phantoms;
+	withTruth += o.withTruth;
+	errors.insert(errors.end(), o.errors.begin(), o.errors.end());
+	hiddenErrors.insert(hiddenErrors.end(), o.hiddenErrors.begin(), o.hiddenErrors.end());
+	rangeErrorMedian = median(errors);
+	hiddenRangeErrorMedian = median(hiddenErrors);
+}
+
+FusionScore scoreFusedScan(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
+	const std::vector<bool>& inView, double maxRange)
+{
+	FusionScore s;
+	const auto hidden = hiddenBearings(laser, truth, inView);
+	for (size_t i = 0; i < truth.size(); i++)
+	{
+		if (!inView[i]) continue;
+		const double t = truth[i];
+		const double l = rangeOf(laser, i), f = rangeOf(fused, i);
+		// Beyond Zmax vision is not asked to see; count the bearing only if
+		// the laser or the truth puts something within it.
+		if (std::min(t, l) > maxRange && f >= std::min<double>(l, maxRange)) continue;
+		s.inView++;
+		if (f < std::min(t, l) - 0.10) s.phantoms++;
+		if (std::isfinite(t) && t <= maxRange)
+		{
+			s.withTruth++;
+			s.errors.push_back(static_cast<float>(std::abs(f - t)));
+		}
+		if (hidden[i] && t <= maxRange)
+		{
+			s.hidden++;
+			if (f <= t + 0.10) s.recalled++;
+			s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
+		}
+	}
+	s.rangeErrorMedian = median(s.errors);
+	s.hiddenRangeErrorMedian = median(s.hiddenErrors);
+	return s;
+}
 }  // namespace lvf::metrics

@@ -1,4 +1,5 @@
 #include <lvfusion/plugin/registerAllClasses.h>
+#include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <mrpt/rtti/CObject.h>
 
@@ -8,5 +9,6 @@ void registerAllClasses()
 {
 	// One line per class, as MRPT's own registerAllClasses.cpp files do.
 	mrpt::rtti::registerClass(CLASS_ID(lvf::simulation::CStereoLaserSimulator));
+	mrpt::rtti::registerClass(CLASS_ID(lvf::fusion::CLaserStereoFusion));
 }
 }  // namespace lvf

@@ -83,6 +83,7 @@ void SimulatedStereoRig::renderCamera(
 	std::vector<int> candidates;
 	candidates.reserve(w.boxes.size());
 	const float sampleWeight = 1.0f / static_cast<float>(s * s);
+	const double sampleAngle = 1.0 / (m_options.fx * s);  // [rad] near the axis
 	const int centreSample = s / 2;
 	for (const auto& tile : rays.tiles())
 	{
@@ -106,9 +107,14 @@ void SimulatedStereoRig::renderCamera(
 				float shade = static_cast<float>(w.light.background);
 				if (hit.hit())
 				{
-					const double lambert =
-						std::max(0.0, world.normalAt(hit).dot(toLight));
-					shade = world.albedoAt(hit, origin, dir) *
+					const Eigen::Vector3d normal = world.normalAt(hit);
+					const double lambert = std::max(0.0, normal.dot(toLight));
+					// The sample's size on the surface: distance times its
+					// angular size, stretched by the viewing obliquity.
+					const double length = dir.norm();
+					const double obliquity = std::max(0.2, std::abs(normal.dot(dir)) / length);
+					const double footprint = hit.t * length * sampleAngle / obliquity;
+					shade = world.albedoAt(hit, origin, dir, footprint) *
 						static_cast<float>(w.light.ambient + w.light.diffuse * lambert);
 				}
 				radiance(r / s, c / s) += sampleWeight * shade;

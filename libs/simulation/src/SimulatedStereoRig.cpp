@@ -27,6 +27,9 @@ void SimulatedStereoRig::TOptions::loadFromConfigFile(
 			"needs 5 values [k1 k2 p1 p2 k3], got " +
 				std::to_string(dist.size()));
 	baseline = ini.real("baseline", baseline, 1e-3, 10);
+	rightYawDeg = ini.real("right_yaw_deg", rightYawDeg, -20, 20);
+	rightPitchDeg = ini.real("right_pitch_deg", rightPitchDeg, -20, 20);
+	rightRollDeg = ini.real("right_roll_deg", rightRollDeg, -20, 20);
 	poseX = ini.real("pose_x", poseX);
 	poseY = ini.real("pose_y", poseY);
 	poseZ = ini.real("pose_z", poseZ, 1e-3);
@@ -55,6 +58,9 @@ void SimulatedStereoRig::TOptions::saveToConfigFile(
 	writeOption(c, s, "cy", cy, "principal point y [px]");
 	writeOption(c, s, "dist", dist, "plumb_bob distortion [k1 k2 p1 p2 k3]; zeros: none");
 	writeOption(c, s, "baseline", baseline, "right camera offset along the left camera's x [m]");
+	writeOption(c, s, "right_yaw_deg", rightYawDeg, "right camera rotation vs the left, yaw (0: parallel rig) [deg]");
+	writeOption(c, s, "right_pitch_deg", rightPitchDeg, "right camera rotation vs the left, pitch [deg]");
+	writeOption(c, s, "right_roll_deg", rightRollDeg, "right camera rotation vs the left, roll [deg]");
 	writeOption(c, s, "pose_x", poseX, "left camera position on the robot, forward [m]");
 	writeOption(c, s, "pose_y", poseY, "left camera position on the robot, left [m]");
 	writeOption(c, s, "pose_z", poseZ, "left camera height above the floor [m]");
@@ -78,10 +84,16 @@ mrpt::img::TStereoCamera SimulatedStereoRig::TOptions::stereoCamera() const
 	mrpt::img::TStereoCamera stereo;
 	stereo.leftCamera = cam;
 	stereo.rightCamera = cam;
-	stereo.rightCameraPose = mrpt::math::TPose3DQuat(
-		mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(baseline, 0, 0, 0, 0, 0))
-			.asTPose());
+	stereo.rightCameraPose =
+		mrpt::math::TPose3DQuat(mrpt::poses::CPose3DQuat(rightCameraPose()).asTPose());
 	return stereo;
+}
+
+mrpt::poses::CPose3D SimulatedStereoRig::TOptions::rightCameraPose() const
+{
+	return mrpt::poses::CPose3D(
+		baseline, 0, 0, mrpt::DEG2RAD(rightYawDeg), mrpt::DEG2RAD(rightPitchDeg),
+		mrpt::DEG2RAD(rightRollDeg));
 }
 
 mrpt::poses::CPose3D SimulatedStereoRig::TOptions::leftCameraPose() const
@@ -109,8 +121,7 @@ SimulatedStereoRig::Images SimulatedStereoRig::render(
 {
 	Images out;
 	const mrpt::poses::CPose3D left = robotPose + m_options.leftCameraPose();
-	const mrpt::poses::CPose3D right =
-		left + mrpt::poses::CPose3D(m_options.baseline, 0, 0, 0, 0, 0);
+	const mrpt::poses::CPose3D right = left + m_options.rightCameraPose();
 	renderCamera(
 		world, left, *m_leftRays, m_options.leftGain, m_options.leftNoiseStd,
 		2 * noiseSeed, out.left, withDepth ? &out.leftDepth : nullptr);

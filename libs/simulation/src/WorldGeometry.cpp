@@ -127,11 +127,11 @@ Eigen::Vector3d WorldGeometry::normalAt(const RayHit& hit) const
 }
 
 float WorldGeometry::albedoAt(
-	const RayHit& hit, const Eigen::Vector3d& origin,
-	const Eigen::Vector3d& dir) const
+	const RayHit& hit, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+	double footprint) const
 {
 	const Eigen::Vector3d p = origin + hit.t * dir;
-	if (hit.box == RayHit::kFloor) return m_floorTexture.albedoAt(p.x(), p.y());
+	if (hit.box == RayHit::kFloor) return m_floorTexture.albedoAt(p.x(), p.y(), footprint);
 	const PreparedBox& b = m_boxes[hit.box];
 	const Eigen::Vector3d q = toBoxFrame(b, p);
 	// Each face gets its own stretch of a noise texture so that opposite and
@@ -142,9 +142,9 @@ float WorldGeometry::albedoAt(
 		: 0.0;
 	switch (hit.axis)
 	{
-		case 0: return b.texture.albedoAt(q.y() + faceShift, q.z());
-		case 1: return b.texture.albedoAt(q.x() + faceShift, q.z());
-		default: return b.texture.albedoAt(q.x() + faceShift, q.y());
+		case 0: return b.texture.albedoAt(q.y() + faceShift, q.z(), footprint);
+		case 1: return b.texture.albedoAt(q.x() + faceShift, q.z(), footprint);
+		default: return b.texture.albedoAt(q.x() + faceShift, q.y(), footprint);
 	}
 }
 

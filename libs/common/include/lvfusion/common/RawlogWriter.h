@@ -10,6 +10,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CSerializable.h>
 
 #include <memory>
 #include <string>
@@ -50,6 +51,9 @@ class RawlogWriter
 	~RawlogWriter();
 
 	void append(const RawlogFrame& frame);
+	/** Writes one rawlog entry as it is (an observation, an action
+	 * collection or a sensory frame), for tools that pass a log through. */
+	void appendEntry(const mrpt::serialization::CSerializable& entry);
 	/** Flushes and closes; the destructor does this too. */
 	void close();
 

@@ -2,6 +2,7 @@
 // The perception figures of DESIGN.md ("Words and metrics used in issues"),
 // computed per frame from a laser scan, a truth scan and the camera geometry.
 
+#include <lvfusion/common/HeightBand.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationStereoImages.h>
 
@@ -9,11 +10,7 @@
 
 namespace lvf::metrics
 {
-struct HeightBand
-{
-	double low = 0.05;	//!< obstacle_min_height [m]
-	double high = 1.20;	 //!< robot_height [m]
-};
+using lvf::HeightBand;
 
 /** Per bearing: does the left camera see the obstacle column there? True when
  * some point of the band (sampled every 5 cm) at the truth range on that
@@ -33,4 +30,26 @@ std::vector<bool> hiddenBearings(
 	const std::vector<float>& truth, const std::vector<bool>& inView,
 	double margin = 0.15);
 
+}  // namespace lvf::metrics
+
+namespace lvf::metrics
+{
+/** DESIGN.md's perception figures for one fused scan, over the in-view
+ * bearings whose truth is within `maxRange` (Zmax). */
+struct FusionScore
+{
+	size_t inView = 0, hidden = 0, recalled = 0, phantoms = 0, withTruth = 0;
+	double rangeErrorMedian = 0;  //!< median |fused - truth| where truth exists [m]
+	double hiddenRangeErrorMedian = 0;	//!< same, over hidden bearings only [m]
+	double recall() const { return hidden ? double(recalled) / double(hidden) : 1.0; }
+	double phantomRate() const { return inView ? double(phantoms) / double(inView) : 0.0; }
+	/** Adds another frame's counts (medians are recomputed from all errors). */
+	void add(const FusionScore& other);
+	std::vector<float> errors, hiddenErrors;
+};
+
+FusionScore scoreFusedScan(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
+	const std::vector<bool>& inView, double maxRange);
 }  // namespace lvf::metrics

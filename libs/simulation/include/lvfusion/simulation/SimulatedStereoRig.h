@@ -27,6 +27,9 @@ class SimulatedStereoRig
 		/** plumb_bob distortion [k1 k2 p1 p2 k3]; all zero: none. */
 		std::vector<double> dist{0, 0, 0, 0, 0};
 		double baseline = 0.12;	 //!< right camera is this far to the right [m]
+		/** Right camera's rotation relative to the left [deg]: zero for a
+		 * parallel rig; small values model a rig that needs rectifying. */
+		double rightYawDeg = 0, rightPitchDeg = 0, rightRollDeg = 0;
 		/** Left camera position on the robot [m]. */
 		double poseX = 0.10, poseY = 0.06, poseZ = 1.00;
 		double panDeg = 0;	//!< left (+) / right (-) of the robot's heading [deg]
@@ -46,6 +49,8 @@ class SimulatedStereoRig
 		mrpt::img::TStereoCamera stereoCamera() const;
 		/** Left camera relative to the robot, MRPT camera axes. */
 		mrpt::poses::CPose3D leftCameraPose() const;
+		/** Right camera relative to the left one (rightCameraPose). */
+		mrpt::poses::CPose3D rightCameraPose() const;
 	};
 
 	explicit SimulatedStereoRig(const TOptions& options);

@@ -51,10 +51,11 @@ class WorldGeometry
 
 	/** Outward surface normal at a hit (world frame, unit). */
 	Eigen::Vector3d normalAt(const RayHit& hit) const;
-	/** Reflectance at the hit point origin + hit.t * dir. */
+	/** Reflectance at the hit point origin + hit.t * dir, averaged over a
+	 * footprint of that many metres (the size of the pixel seeing it). */
 	float albedoAt(
 		const RayHit& hit, const Eigen::Vector3d& origin,
-		const Eigen::Vector3d& dir) const;
+		const Eigen::Vector3d& dir, double footprint = 0) const;
 
 	const World& world() const { return m_world; }
 	size_t boxCount() const { return m_boxes.size(); }

@@ -1,0 +1,96 @@
+#include "FusionOutputs.h"
+
+#include <lvfusion/evaluation/ModelEvaluator.h>
+#include <mrpt/core/format.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace lvf::apps
+{
+using lvf::evaluation::PixelState;
+
+mrpt::obs::CObservationImage::Ptr evaluationImage(
+	const lvf::fusion::CLaserStereoFusion::Result& r, mrpt::Clock::time_point stamp)
+{
+	cv::Mat3b picture = lvf::evaluation::drawEvaluationOverlay(r.left, r.evaluation);
+	for (const auto& p : r.search.points)
+		cv::circle(picture, cv::Point(cvRound(p.u), cvRound(p.v)), 1, {0, 255, 255}, cv::FILLED);
+	auto obs = std::make_shared<mrpt::obs::CObservationImage>();
+	obs->sensorLabel = "EVAL";
+	obs->timestamp = stamp;
+	obs->image = mrpt::img::CImage(picture, mrpt::img::DEEP_COPY);
+	obs->cameraPose = r.geometry.leftPose;
+	obs->cameraParams.ncols = static_cast<uint32_t>(r.geometry.size.width);
+	obs->cameraParams.nrows = static_cast<uint32_t>(r.geometry.size.height);
+	obs->cameraParams.setIntrinsicParamsFromValues(r.geometry.f, r.geometry.f, r.geometry.cx, r.geometry.cy);
+	return obs;
+}
+
+FusionOutputs::FusionOutputs(
+	lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution)
+	: m_files(files),
+	  m_name(name),
+	  m_laserGrid(-5, 5, -5, 5, static_cast<float>(gridResolution)),
+	  m_fusedGrid(-5, 5, -5, 5, static_cast<float>(gridResolution))
+{
+	m_csv.open(files.stage(name + "_frames.csv"));
+	m_csv << "frame,timestamp,segments,inconsistent_px,untextured_px,searched_px,ncc_evaluations,"
+			 "visual_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
+			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
+			 "hidden_range_error_m\n";
+}
+
+void FusionOutputs::add(
+	size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
+	const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
+	const std::optional<lvf::metrics::FusionScore>& score)
+{
+	const mrpt::poses::CPose3D pose(odometry);
+	m_laserGrid.insertObservation(laser, pose);
+	m_fusedGrid.insertObservation(*r.fused, pose);
+
+	size_t shortened = 0;
+	for (size_t i = 0; i < r.visualRanges.size(); i++)
+		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
+	const auto& t = r.times;
+	m_csv << mrpt::format(
+		"%zu,%.6f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
+		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(),
+		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Untextured),
+		r.search.stats.searchedPixels, r.search.stats.disparitiesTested, r.search.points.size(),
+		shortened, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
+		t.fuse, t.total());
+	if (score)
+		m_csv << mrpt::format(
+			",%zu,%zu,%.4f,%.4f,%.4f\n", score->inView, score->hidden, score->recall(),
+			score->phantomRate(), score->hiddenRangeErrorMedian);
+	else
+		m_csv << ",,,,,\n";
+}
+
+void FusionOutputs::close()
+{
+	m_csv.close();
+	cv::Mat panels[2];
+	for (int k = 0; k < 2; k++)
+	{
+		const auto& grid = k == 0 ? m_laserGrid : m_fusedGrid;
+		mrpt::io::CFileGZOutputStream out(
+			m_files.stage(m_name + (k == 0 ? "_laser" : "_fused") + ".gridmap.gz"));
+		mrpt::serialization::archiveFrom(out) << grid;
+		mrpt::img::CImage img;
+		grid.getAsImage(img, false, true);
+		panels[k] = img.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY);
+	}
+	// Same height, a white gap between: laser only | laser + vision.
+	const int rows = std::max(panels[0].rows, panels[1].rows);
+	for (auto& p : panels)
+		cv::copyMakeBorder(p, p, 0, rows - p.rows, 0, 10, cv::BORDER_CONSTANT, cv::Scalar::all(255));
+	cv::Mat sideBySide;
+	cv::hconcat(panels[0], panels[1], sideBySide);
+	cv::imwrite(m_files.stage(m_name + "_grids.png"), sideBySide);
+}
+
+}  // namespace lvf::apps

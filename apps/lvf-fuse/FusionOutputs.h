@@ -1,0 +1,43 @@
+#pragma once
+// lvf-fuse's results besides the output rawlog:
+//   NAME_fused.gridmap.gz / NAME_laser.gridmap.gz  local occupancy grids
+//   NAME_grids.png     laser-only (left) and fused (right), as paper Figs. 9, 11d-e
+//   NAME_frames.csv    per frame: stage times, pixel counts, obstacle counts,
+//                      and recall / phantom rate when a truth scan is known
+
+#include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/fusion/CLaserStereoFusion.h>
+#include <lvfusion/metrics/ScanMetrics.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservationImage.h>
+
+#include <fstream>
+#include <optional>
+
+namespace lvf::apps
+{
+/** The evaluation picture of a frame (label EVAL): inconsistent pixels red,
+ * unjudged blue, visual obstacle points yellow. */
+mrpt::obs::CObservationImage::Ptr evaluationImage(
+	const lvf::fusion::CLaserStereoFusion::Result& r, mrpt::Clock::time_point stamp);
+
+class FusionOutputs
+{
+   public:
+	FusionOutputs(lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution);
+
+	/** Inserts both scans at the odometry pose and logs the frame's figures. */
+	void add(
+		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
+		const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
+		const std::optional<lvf::metrics::FusionScore>& score);
+	void close();
+
+   private:
+	lvf::common::StagedOutputFiles& m_files;
+	std::string m_name;
+	mrpt::maps::COccupancyGridMap2D m_laserGrid, m_fusedGrid;
+	std::ofstream m_csv;
+};
+
+}  // namespace lvf::apps

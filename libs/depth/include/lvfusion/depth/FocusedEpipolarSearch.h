@@ -1,0 +1,94 @@
+#pragma once
+// Stage 4 (paper §5, §6.1): depth from vision, only where the laser's model
+// was found wrong, and only along the stretch of the epipolar line that can
+// hold an obstacle the robot cares about (DisparityInterval.h).
+//
+// For each inconsistent pixel (on a grid of `pixel_stride`), every integer
+// disparity in the allowed set is scored by NCC between the left window and
+// the right window on the same row. The best score is accepted only if it is
+// high, a true local maximum (its neighbours, even outside the allowed set,
+// score lower: a peak cut by a bound is the model surface or something out of
+// range, not an obstacle), and unique (no other local maximum within
+// `uniqueness_margin` of it, and the model's own disparity scoring clearly
+// less: evaluation can flag a pixel for reasons other than an obstacle, e.g.
+// fine texture, and then the model may still be the best explanation).
+// A parabola through the peak gives sub-pixel
+// disparity; triangulation gives a robot-frame point, kept if it lies in the
+// robot's height band.
+
+#include <lvfusion/common/HeightBand.h>
+#include <lvfusion/evaluation/ModelEvaluator.h>
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace lvf::depth
+{
+struct VisualPoint
+{
+	float u = 0, v = 0;	 //!< rectified left pixel
+	float disparity = 0;  //!< sub-pixel [px]
+	float ncc = 0;	//!< score of the match
+	Eigen::Vector3d robot;	//!< triangulated point, robot frame [m]
+};
+
+struct DepthSearchStats
+{
+	size_t searchedPixels = 0;	//!< inconsistent pixels on the stride grid with a non-empty range
+	size_t skippedEmptyRange = 0;  //!< inconsistent pixels the criteria left nothing to search
+	size_t disparitiesTested = 0;  //!< NCC evaluations
+	size_t accepted = 0;  //!< matches kept (in the band)
+	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
+};
+
+class FocusedEpipolarSearch
+{
+   public:
+	/** INI section [FocusedEpipolarSearch]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		bool criterionA = true;	 //!< |Z - Zl| >= d_allow
+		double dAllow = 0.25;  //!< [m]
+		bool criterionB = true;	 //!< Z <= Zl
+		bool criterionC = true;	 //!< Zmin <= Z <= Zmax
+		double zMin = 0.3, zMax = 5.0;	//!< [m]
+		bool boundByBand = true;  //!< only depths whose height is in the robot band
+		int pixelStride = 3;  //!< search every n-th inconsistent pixel per row and column
+		double acceptNcc = 0.8;	 //!< a match must score at least this
+		double uniquenessMargin = 0.1;	//!< other peaks must score this much less
+		double minTextureStd = 8.0;	 //!< left window std needed to search [grey levels]
+		int peakContext = 8;  //!< NCC also scored this far outside the allowed set [px]
+		bool verifyFullLine = true;	 //!< accepted matches must beat the whole line
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+	};
+
+	struct Result
+	{
+		std::vector<VisualPoint> points;
+		DepthSearchStats stats;
+	};
+
+	FocusedEpipolarSearch() = default;
+	explicit FocusedEpipolarSearch(const TOptions& options) : m_options(options) {}
+
+	/** @param windowSize the NCC window, the one the evaluation used (its
+	 *  left-image window statistics are reused). */
+	Result search(
+		const cv::Mat1b& left, const cv::Mat1b& right,
+		const lvf::evaluation::ModelEvaluation& evaluation, int windowSize,
+		const lvf::evaluation::RectifiedGeometry& geometry, const HeightBand& band) const;
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	TOptions m_options;
+};
+
+}  // namespace lvf::depth

@@ -1,0 +1,74 @@
+#pragma once
+// Stage 3 (paper §4): is the scan's planar model what the cameras see?
+//
+// Every left pixel is carried by the model's disparity into the right image;
+// if the model were right, the right image resampled that way would equal the
+// left one. Local normalised cross-correlation (NCC) between the two, over a
+// square window, says where it is not. The five window sums NCC needs are box
+// filters over the whole image, so the cost per pixel does not depend on the
+// window size. Windows without texture cannot be judged and are gated out.
+
+#include <lvfusion/evaluation/RectifiedStereo.h>
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <array>
+
+namespace lvf::evaluation
+{
+enum class PixelState : uint8_t
+{
+	Consistent = 0,	 //!< the model explains what both cameras see
+	Inconsistent = 1,  //!< it does not: search for depth here (stage 4)
+	Untextured = 2,	 //!< too little texture to tell
+	Unverifiable = 3  //!< no model surface, or its match leaves the right image
+};
+
+struct ModelEvaluation
+{
+	cv::Mat1f modelDisparity;  //!< [px], 0: no model surface
+	cv::Mat1f ncc;	//!< left vs model-warped right, in [-1, 1]
+	cv::Mat1b state;  //!< PixelState per pixel
+	cv::Mat1f leftMean, leftStd;  //!< window statistics of the left image
+	std::array<size_t, 4> counts{};	 //!< pixels per PixelState
+
+	size_t count(PixelState s) const { return counts[static_cast<size_t>(s)]; }
+};
+
+class ModelEvaluator
+{
+   public:
+	/** INI section [ModelEvaluator]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		int windowSize = 11;  //!< NCC window side [px], odd
+		double nccThreshold = 0.8;	//!< below: inconsistent (see test_model_evaluation)
+		double minTextureStd = 4.0;	 //!< window std below this: untextured [grey levels]
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+	};
+
+	ModelEvaluator() = default;
+	explicit ModelEvaluator(const TOptions& options) : m_options(options) {}
+
+	/** @param left, right rectified grey images
+	 *  @param modelDisparity from renderModelDisparity() */
+	ModelEvaluation evaluate(
+		const cv::Mat1b& left, const cv::Mat1b& right,
+		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const;
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	TOptions m_options;
+};
+
+/** The left image with inconsistent pixels tinted red and pixels that could
+ * not be judged (untextured, unverifiable) tinted blue (cf. paper Fig. 3c). */
+cv::Mat3b drawEvaluationOverlay(const cv::Mat1b& left, const ModelEvaluation& evaluation);
+
+}  // namespace lvf::evaluation

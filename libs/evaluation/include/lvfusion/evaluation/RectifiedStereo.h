@@ -1,0 +1,67 @@
+#pragma once
+// A calibrated stereo pair brought into the standard rectified geometry:
+// undistorted, image rows aligned, the right camera `baseline` metres along
+// the left camera's x axis. In it a point at depth Z appears in the right
+// image `f * baseline / Z - cxOffset` pixels to the left of its left-image
+// column (disparity d = f B / Z), on the same row.
+//
+// A pair that is already like that (no distortion, equal intrinsics apart
+// from cx, parallel cameras, e.g. Middlebury or the default simulator) is used
+// as is; otherwise OpenCV's stereoRectify + remap produce it. The rectified
+// left camera's pose on the robot is kept so that pixels can be turned into
+// robot-frame rays and back.
+
+#include <mrpt/obs/CObservationStereoImages.h>
+#include <mrpt/poses/CPose3D.h>
+#include <opencv2/core.hpp>
+
+namespace lvf::evaluation
+{
+/** The geometry of a rectified pair, all the later stages need. */
+struct RectifiedGeometry
+{
+	cv::Size size;	//!< image size [px]
+	double f = 0;  //!< focal length [px] (fx = fy after rectification)
+	double cx = 0, cy = 0;	//!< left principal point [px]
+	double cxOffset = 0;  //!< right cx minus left cx [px] (Middlebury's doffs)
+	double baseline = 0;  //!< [m]
+	/** Rectified left camera on the robot (MRPT camera axes). */
+	mrpt::poses::CPose3D leftPose;
+
+	/** f * baseline [px m]: disparity = fB / depth. */
+	double fB() const { return f * baseline; }
+	/** Normalised ray of pixel (u, v) in the rectified left camera frame. */
+	double rayX(double u) const { return (u - cx) / f; }
+	double rayY(double v) const { return (v - cy) / f; }
+};
+
+class RectifiedStereo
+{
+   public:
+	/** Checks and prepares a calibration (both images present, sizes equal
+	 * to the calibration, positive focal lengths, a usable baseline).
+	 * Throws lvf::common::InputError naming `record` otherwise. Prepared maps
+	 * are reused while the calibration does not change. */
+	void prepare(
+		const mrpt::obs::CObservationStereoImages& obs, const std::string& record);
+
+	/** Both images, grey, rectified. prepare() first. */
+	void rectify(
+		const mrpt::obs::CObservationStereoImages& obs, cv::Mat1b& left,
+		cv::Mat1b& right) const;
+
+	const RectifiedGeometry& geometry() const { return m_geometry; }
+	bool remaps() const { return !m_mapLeftX.empty(); }
+
+   private:
+	mrpt::img::TStereoCamera m_calibration;
+	mrpt::poses::CPose3D m_cameraPose;
+	bool m_prepared = false;
+	RectifiedGeometry m_geometry;
+	cv::Mat m_mapLeftX, m_mapLeftY, m_mapRightX, m_mapRightY;
+};
+
+/** Grey 8-bit view (or conversion) of an MRPT image. */
+cv::Mat1b toGrey(const mrpt::img::CImage& image);
+
+}  // namespace lvf::evaluation

@@ -1,0 +1,113 @@
+#include <lvfusion/evaluation/ModelDisparity.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace lvf::evaluation
+{
+namespace
+{
+/** g(u, v) = a u + b v + c over the pixels of the rectified left image. */
+struct PixelAffine
+{
+	double a = 0, b = 0, c = 0;
+	double at(double u, double v) const { return a * u + b * v + c; }
+};
+
+/** `k * (n . ray(u, v))` for a camera-frame vector n, as a PixelAffine. */
+PixelAffine dotWithRay(const Eigen::Vector3d& n, double k, const RectifiedGeometry& g)
+{
+	// ray(u, v) = ((u - cx) / f, (v - cy) / f, 1)
+	return {k * n.x() / g.f, k * n.y() / g.f,
+			k * (n.z() - n.x() * g.cx / g.f - n.y() * g.cy / g.f)};
+}
+
+/** Columns [lo, hi] of row v where g >= 0 (lo > hi: none). */
+void clipToNonNegative(const PixelAffine& g, double v, double& lo, double& hi)
+{
+	const double c = g.b * v + g.c;	 // g = a u + c on this row
+	if (std::abs(g.a) < 1e-15)
+	{
+		if (c < 0) lo = hi + 1;
+		return;
+	}
+	const double root = -c / g.a;
+	if (g.a > 0) lo = std::max(lo, root);
+	else hi = std::min(hi, root);
+}
+
+struct Wall
+{
+	PixelAffine disparity, edgeA, edgeB;
+};
+
+}  // namespace
+
+cv::Mat1f renderModelDisparity(
+	const lvf::model::PlanarSceneModel& model, const RectifiedGeometry& g)
+{
+	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
+	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
+	// Plane n . X = c (robot frame) -> disparity fB / Z = fB (n_c . ray) / c_c
+	// with n_c = Rc^T n and c_c = c - n . C (camera frame).
+	auto planeDisparity = [&](const Eigen::Vector3d& n, double c, bool& ok) {
+		const double cc = c - n.dot(C);
+		ok = std::abs(cc) > 1e-9;  // the camera is not inside the plane
+		return dotWithRay(Rc.transpose() * n, ok ? g.fB() / cc : 0.0, g);
+	};
+
+	bool floorOk = false;
+	const PixelAffine floor =
+		planeDisparity({0, 0, 1}, model.floorHeight(), floorOk);
+
+	std::vector<Wall> walls;
+	for (const auto& w : model.walls())
+	{
+		const Eigen::Vector2d e = w.end - w.start;
+		if (e.norm() < 1e-9) continue;
+		bool ok = false;
+		Wall wall;
+		wall.disparity = planeDisparity(
+			Eigen::Vector3d(-e.y(), e.x(), 0).normalized(),
+			Eigen::Vector2d(-e.y(), e.x()).normalized().dot(w.start), ok);
+		if (!ok) continue;
+		// Vertical plane through the camera centre and one endpoint, its
+		// normal oriented towards the other endpoint: rays between both
+		// planes meet the wall between its endpoints.
+		auto edge = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& other) {
+			const Eigen::Vector2d q = p - C.head<2>(), r = other - C.head<2>();
+			Eigen::Vector3d m(q.y(), -q.x(), 0);
+			if (m.head<2>().dot(r) < 0) m = -m;
+			return dotWithRay(Rc.transpose() * m, 1.0, g);
+		};
+		wall.edgeA = edge(w.start, w.end);
+		wall.edgeB = edge(w.end, w.start);
+		walls.push_back(wall);
+	}
+
+	cv::Mat1f disparity = cv::Mat1f::zeros(g.size);
+	const double lastCol = g.size.width - 1;
+	for (int v = 0; v < g.size.height; v++)
+	{
+		float* row = disparity.ptr<float>(v);
+		if (floorOk)
+			for (int u = 0; u < g.size.width; u++)
+				row[u] = static_cast<float>(std::max(0.0, floor.at(u, v)));
+		for (const Wall& w : walls)
+		{
+			double lo = 0, hi = lastCol;
+			clipToNonNegative(w.edgeA, v, lo, hi);
+			clipToNonNegative(w.edgeB, v, lo, hi);
+			clipToNonNegative(w.disparity, v, lo, hi);	// in front of the camera
+			if (lo > hi) continue;
+			const int u0 = static_cast<int>(std::ceil(lo)), u1 = static_cast<int>(std::floor(hi));
+			const double rowC = w.disparity.b * v + w.disparity.c;
+			for (int u = u0; u <= u1; u++)
+				row[u] = std::max(row[u], static_cast<float>(w.disparity.a * u + rowC));
+		}
+	}
+	return disparity;
+}
+
+}  // namespace lvf::evaluation

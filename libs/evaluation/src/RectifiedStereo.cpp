@@ -1,0 +1,171 @@
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/evaluation/RectifiedStereo.h>
+#include <Eigen/Dense>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace lvf::evaluation
+{
+using lvf::common::InputError;
+
+namespace
+{
+bool nearlyEqual(double a, double b)
+{
+	return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+bool hasDistortion(const mrpt::img::TCamera& c)
+{
+	for (double k : c.dist)
+		if (k != 0) return true;
+	return false;
+}
+
+/** Everything that defines the rectification, for change detection. */
+std::vector<double> calibrationKey(
+	const mrpt::img::TStereoCamera& s, const mrpt::poses::CPose3D& cameraPose)
+{
+	std::vector<double> key;
+	for (const auto* c : {&s.leftCamera, &s.rightCamera})
+	{
+		key.push_back(c->ncols);
+		key.push_back(c->nrows);
+		for (int i = 0; i < 9; i++) key.push_back(c->intrinsicParams(i / 3, i % 3));
+		key.insert(key.end(), c->dist.begin(), c->dist.end());
+	}
+	const mrpt::poses::CPose3D right(s.rightCameraPose);
+	for (const auto* p : {&right, &cameraPose})
+		for (int i = 0; i < 6; i++) key.push_back((*p)[i]);
+	return key;
+}
+
+cv::Mat cameraMatrix(const mrpt::img::TCamera& c)
+{
+	return (cv::Mat_<double>(3, 3) << c.fx(), 0, c.cx(), 0, c.fy(), c.cy(), 0, 0, 1);
+}
+
+cv::Mat distortionVector(const mrpt::img::TCamera& c)
+{
+	return cv::Mat(1, 5, CV_64F, const_cast<double*>(c.dist.data())).clone();
+}
+
+}  // namespace
+
+cv::Mat1b toGrey(const mrpt::img::CImage& image)
+{
+	const mrpt::img::CImage grey =
+		image.isColor() ? image.grayscale() : mrpt::img::CImage(image, mrpt::img::SHALLOW_COPY);
+	return grey.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+}
+
+void RectifiedStereo::prepare(
+	const mrpt::obs::CObservationStereoImages& obs, const std::string& record)
+{
+	if (!obs.hasImageRight || obs.imageRight.isEmpty())
+		throw InputError(record, "", "stereo observation has no right image");
+	const auto calib = obs.getStereoCameraParams();
+	for (const auto& [image, cam, which] :
+		 {std::tuple{&obs.imageLeft, &calib.leftCamera, "left"},
+		  std::tuple{&obs.imageRight, &calib.rightCamera, "right"}})
+	{
+		if (!(cam->fx() > 0 && cam->fy() > 0 && std::isfinite(cam->fx()) &&
+			  std::isfinite(cam->fy())))
+			throw InputError(record, std::string(which) + " camera",
+				"focal length must be positive and finite (fx " +
+					std::to_string(cam->fx()) + ", fy " + std::to_string(cam->fy()) + ")");
+		if (image->getWidth() != cam->ncols || image->getHeight() != cam->nrows)
+			throw InputError(record, std::string(which) + " image",
+				std::to_string(image->getWidth()) + "x" + std::to_string(image->getHeight()) +
+					" pixels, but the calibration says " + std::to_string(cam->ncols) +
+					"x" + std::to_string(cam->nrows));
+	}
+	const mrpt::poses::CPose3D right(calib.rightCameraPose);
+	const double baseline = right.translation().norm();
+	if (!(baseline > 1e-6 && right.x() > 0))
+		throw InputError(record, "rightCameraPose",
+			"the right camera must be to the right of the left one (x > 0), got x = " +
+				std::to_string(right.x()));
+
+	const mrpt::poses::CPose3D cameraPose(obs.cameraPose);
+	if (m_prepared && calibrationKey(calib, cameraPose) == calibrationKey(m_calibration, m_cameraPose))
+		return;
+	m_calibration = calib;
+	m_cameraPose = cameraPose;
+	m_prepared = true;
+
+	const auto& L = calib.leftCamera;
+	const auto& R = calib.rightCamera;
+	m_geometry.size = cv::Size(static_cast<int>(L.ncols), static_cast<int>(L.nrows));
+	const bool alreadyRectified = !hasDistortion(L) && !hasDistortion(R) &&
+		nearlyEqual(L.fx(), L.fy()) && nearlyEqual(L.fx(), R.fx()) &&
+		nearlyEqual(L.fy(), R.fy()) && nearlyEqual(L.cy(), R.cy()) &&
+		right.getRotationMatrix().asEigen().isIdentity(1e-9) &&
+		std::abs(right.y()) < 1e-9 * baseline && std::abs(right.z()) < 1e-9 * baseline;
+	if (alreadyRectified)
+	{
+		m_mapLeftX = m_mapLeftY = m_mapRightX = m_mapRightY = cv::Mat();
+		m_geometry.f = L.fx();
+		m_geometry.cx = L.cx();
+		m_geometry.cy = L.cy();
+		m_geometry.cxOffset = R.cx() - L.cx();
+		m_geometry.baseline = baseline;
+		m_geometry.leftPose = cameraPose;
+		return;
+	}
+
+	// OpenCV wants the transform from left-camera to right-camera
+	// coordinates, the inverse of MRPT's pose of the right camera.
+	const mrpt::poses::CPose3D leftInRight = -right;
+	cv::Mat Rlr(3, 3, CV_64F), Tlr(3, 1, CV_64F);
+	const auto rot = leftInRight.getRotationMatrix();
+	for (int i = 0; i < 3; i++)
+	{
+		for (int j = 0; j < 3; j++) Rlr.at<double>(i, j) = rot(i, j);
+		Tlr.at<double>(i) = leftInRight[i];
+	}
+	cv::Mat R1, R2, P1, P2, Q;
+	// Zero disparity at infinity (equal cx) and alpha 0: only valid pixels.
+	cv::stereoRectify(
+		cameraMatrix(L), distortionVector(L), cameraMatrix(R), distortionVector(R),
+		m_geometry.size, Rlr, Tlr, R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, 0);
+	cv::initUndistortRectifyMap(
+		cameraMatrix(L), distortionVector(L), R1, P1, m_geometry.size, CV_16SC2,
+		m_mapLeftX, m_mapLeftY);
+	cv::initUndistortRectifyMap(
+		cameraMatrix(R), distortionVector(R), R2, P2, m_geometry.size, CV_16SC2,
+		m_mapRightX, m_mapRightY);
+	m_geometry.f = P1.at<double>(0, 0);
+	m_geometry.cx = P1.at<double>(0, 2);
+	m_geometry.cy = P1.at<double>(1, 2);
+	m_geometry.cxOffset = P2.at<double>(0, 2) - P1.at<double>(0, 2);
+	m_geometry.baseline = -P2.at<double>(0, 3) / P2.at<double>(0, 0);
+	// R1 maps original-left coordinates to rectified ones (X_rect = R1 X), so
+	// the rectified camera is the original one rotated by R1 transposed.
+	mrpt::math::CMatrixDouble33 rectToLeft;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++) rectToLeft(i, j) = R1.at<double>(j, i);
+	mrpt::poses::CPose3D rectified;
+	rectified.setRotationMatrix(rectToLeft);
+	m_geometry.leftPose = cameraPose + rectified;
+}
+
+void RectifiedStereo::rectify(
+	const mrpt::obs::CObservationStereoImages& obs, cv::Mat1b& left,
+	cv::Mat1b& right) const
+{
+	const cv::Mat1b greyLeft = toGrey(obs.imageLeft);
+	const cv::Mat1b greyRight = toGrey(obs.imageRight);
+	if (!remaps())
+	{
+		left = greyLeft;
+		right = greyRight;
+		return;
+	}
+	cv::remap(greyLeft, left, m_mapLeftX, m_mapLeftY, cv::INTER_LINEAR);
+	cv::remap(greyRight, right, m_mapRightX, m_mapRightY, cv::INTER_LINEAR);
+}
+
+}  // namespace lvf::evaluation

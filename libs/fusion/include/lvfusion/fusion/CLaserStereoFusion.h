@@ -1,0 +1,93 @@
+#pragma once
+// The paper's whole perception pipeline as one MRPT-registered class: a 2D
+// scan and a stereo pair in, every stage's result out.
+//
+//   1. scan -> line segments              lvf::lines::ScanLineExtractor
+//   2. segments -> planar model           lvf::model::PlanarSceneModel
+//   3. model evaluation (NCC)             lvf::evaluation::ModelEvaluator
+//   4. focused epipolar depth search      lvf::depth::FocusedEpipolarSearch
+//   5. fused virtual scan                 lvf::fusion::ScanFusion
+//
+// Configuration: an MRPT INI file with one section per stage (defaults and
+// meanings in share/lvfusion/config/fusion.ini, or lvf-fuse --dump-config).
+
+#include <lvfusion/common/HeightBand.h>
+#include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include <lvfusion/evaluation/ModelEvaluator.h>
+#include <lvfusion/fusion/ScanFusion.h>
+#include <lvfusion/lines/ScanLineExtractor.h>
+#include <lvfusion/model/PlanarSceneModel.h>
+#include <mrpt/rtti/CObject.h>
+
+namespace lvf::fusion
+{
+class CLaserStereoFusion : public mrpt::rtti::CObject
+{
+	DEFINE_MRPT_OBJECT(CLaserStereoFusion, lvf::fusion)
+
+   public:
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		HeightBand band;  //!< obstacle_min_height .. robot_height [m]
+		double floorHeight = 0;	 //!< floor z in the robot frame [m]
+		/** More inconsistent than this fraction of the judged pixels, and the
+		 * calibration (not the world) is wrong: fall back to the laser. */
+		double maxInconsistentFraction = 0.6;
+		lvf::lines::ScanLineExtractor::TOptions lines;
+		lvf::evaluation::ModelEvaluator::TOptions evaluation;
+		lvf::depth::FocusedEpipolarSearch::TOptions depth;
+		ScanFusion::TOptions fusion;
+
+		/** Reads every section; unknown sections and keys are errors. */
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	/** Milliseconds spent per stage. */
+	struct StageTimes
+	{
+		double lines = 0, model = 0, rectify = 0, evaluate = 0, search = 0, fuse = 0;
+		double total() const { return lines + model + rectify + evaluate + search + fuse; }
+	};
+
+	struct Result
+	{
+		std::vector<lvf::lines::LineSegment> segments;
+		lvf::model::PlanarSceneModel model;
+		lvf::evaluation::RectifiedGeometry geometry;
+		cv::Mat1b left, right;	//!< rectified grey images
+		lvf::evaluation::ModelEvaluation evaluation;
+		lvf::depth::FocusedEpipolarSearch::Result search;
+		std::vector<float> visualRanges;  //!< per laser bearing, inf: none
+		mrpt::obs::CObservation2DRangeScan::Ptr fused;	//!< label FUSED
+		bool fellBackToLaser = false;  //!< vision not used this frame (see warnings)
+		std::vector<std::string> warnings;	//!< one line each, naming the record
+		StageTimes times;
+	};
+
+	CLaserStereoFusion() = default;
+	explicit CLaserStereoFusion(const TOptions& options);
+
+	/** @param record names the frame in messages ("log.rawlog: frame 12").
+	 * Throws lvf::common::InputError for an unusable observation (no right
+	 * image, sizes that disagree with the calibration, bad focal length, a
+	 * scan without rays). Recoverable oddities (NaN/inf/negative ranges, no
+	 * valid range, a calibration the images contradict) become warnings, and
+	 * where vision cannot be trusted the frame falls back to the laser. */
+	Result process(
+		const mrpt::obs::CObservation2DRangeScan& scan,
+		const mrpt::obs::CObservationStereoImages& stereo, const std::string& record);
+
+	const TOptions& options() const { return m_options; }
+
+	/** The laser alone, for a frame vision cannot serve. */
+	static Result laserOnly(const mrpt::obs::CObservation2DRangeScan& scan, std::string why);
+
+   private:
+	TOptions m_options;
+	lvf::evaluation::RectifiedStereo m_stereo;	// caches rectification maps
+};
+
+}  // namespace lvf::fusion

@@ -1,0 +1,61 @@
+#pragma once
+// Stage 5 (paper §5, §6): visual obstacles meet the laser in its own terms.
+// Each visual point in the robot band is projected onto the floor and binned
+// by the laser bearing it falls on; per bearing the fused range is the nearer
+// of the laser's and the visual one. Isolated matches are not trusted: a
+// bearing needs `min_points` visual points within `cluster_tolerance` of each
+// other before vision may shorten it, and the cluster must straddle the
+// bin's own bearing (at an obstacle's edge a bin can hold points that lie
+// beside its ray, which the ray misses). The range used is the nearest of the
+// cluster's points closest to the bin's bearing: robust to the odd mismatch,
+// right on slanted faces, and at the front edge of surfaces seen from above.
+
+#include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <vector>
+
+namespace lvf::fusion
+{
+class ScanFusion
+{
+   public:
+	/** INI section [ScanFusion]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		int minPoints = 3;	//!< visual points needed to trust a bearing
+		double clusterTolerance = 0.15;	 //!< they must lie within this range span [m]
+		/** ...and straddle the bin's own bearing, give or take this fraction
+		 * of a bin (the sampling gap between visual points). */
+		double centreSlack = 0.1;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source,
+			const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target,
+			const std::string& section) const override;
+	};
+
+	ScanFusion() = default;
+	explicit ScanFusion(const TOptions& options) : m_options(options) {}
+
+	/** Per laser bearing, the robust visual range (+inf where vision found
+	 * nothing trustworthy). */
+	std::vector<float> visualRanges(
+		const mrpt::obs::CObservation2DRangeScan& laser,
+		const std::vector<lvf::depth::VisualPoint>& points) const;
+
+	/** The laser scan with each bearing shortened to the visual range where
+	 * that is nearer; label FUSED. */
+	static mrpt::obs::CObservation2DRangeScan::Ptr fuse(
+		const mrpt::obs::CObservation2DRangeScan& laser, const std::vector<float>& visual);
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	TOptions m_options;
+};
+
+}  // namespace lvf::fusion

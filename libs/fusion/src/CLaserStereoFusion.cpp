@@ -1,0 +1,165 @@
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/evaluation/ModelDisparity.h>
+#include <lvfusion/fusion/CLaserStereoFusion.h>
+
+#include <lvfusion/common/InputError.h>
+
+#include <chrono>
+#include <cmath>
+
+IMPLEMENTS_MRPT_OBJECT(CLaserStereoFusion, mrpt::rtti::CObject, lvf::fusion)
+
+namespace lvf::fusion
+{
+using lvf::common::writeOption;
+
+namespace
+{
+const char* kLines = "ScanLineExtractor";
+const char* kEvaluation = "ModelEvaluator";
+const char* kDepth = "FocusedEpipolarSearch";
+const char* kFusion = "ScanFusion";
+
+/** Runs f() and adds its duration to `ms`. */
+template <typename F>
+auto timed(double& ms, F&& f)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	auto r = f();
+	ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+	return r;
+}
+}  // namespace
+
+void CLaserStereoFusion::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kFusion});
+	lvf::common::IniSection ini(source, section);
+	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
+	band.high = ini.real("robot_height", band.high, band.low, 100);
+	floorHeight = ini.real("floor_height", floorHeight, -100, 100);
+	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
+	ini.rejectUnknownKeys();
+	lines.loadFromConfigFile(source, kLines);
+	evaluation.loadFromConfigFile(source, kEvaluation);
+	depth.loadFromConfigFile(source, kDepth);
+	fusion.loadFromConfigFile(source, kFusion);
+}
+
+void CLaserStereoFusion::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	writeOption(c, s, "obstacle_min_height", band.low, "lower edge of the robot height band [m]");
+	writeOption(c, s, "robot_height", band.high, "upper edge of the band: the robot's height [m]");
+	writeOption(c, s, "floor_height", floorHeight, "floor z in the robot frame [m]");
+	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more inconsistent judged pixels than this: calibration suspect, laser only");
+	lines.saveToConfigFile(c, kLines);
+	evaluation.saveToConfigFile(c, kEvaluation);
+	depth.saveToConfigFile(c, kDepth);
+	fusion.saveToConfigFile(c, kFusion);
+}
+
+CLaserStereoFusion::CLaserStereoFusion(const TOptions& options) : m_options(options) {}
+
+CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
+	const mrpt::obs::CObservation2DRangeScan& scan, std::string why)
+{
+	Result r;
+	r.fellBackToLaser = true;
+	if (!why.empty()) r.warnings.push_back(std::move(why));
+	r.visualRanges.assign(scan.getScanSize(), std::numeric_limits<float>::infinity());
+	r.fused = ScanFusion::fuse(scan, r.visualRanges);
+	return r;
+}
+
+CLaserStereoFusion::Result CLaserStereoFusion::process(
+	const mrpt::obs::CObservation2DRangeScan& rawScan,
+	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record)
+{
+	if (rawScan.getScanSize() == 0)
+		throw lvf::common::InputError(record, "scan " + rawScan.sensorLabel, "has no rays");
+	// Ranges a driver should never report are invalid, said once per frame.
+	mrpt::obs::CObservation2DRangeScan scan(rawScan);
+	size_t bad = 0, valid = 0;
+	for (size_t i = 0; i < scan.getScanSize(); i++)
+	{
+		const float range = scan.getScanRange(i);
+		if (scan.getScanRangeValidity(i) && !(std::isfinite(range) && range > 0))
+		{
+			scan.setScanRangeValidity(i, false);
+			scan.setScanRange(i, scan.maxRange);
+			bad++;
+		}
+		valid += scan.getScanRangeValidity(i);
+	}
+	std::vector<std::string> warnings;
+	if (bad)
+		warnings.push_back(record + ": scan " + scan.sensorLabel + ": " + std::to_string(bad) +
+			" rays with NaN, infinite or non-positive range, treated as no return");
+	if (valid == 0)
+	{
+		Result r = laserOnly(scan, record + ": scan " + scan.sensorLabel +
+			" has no valid range: no model to check, laser only");
+		r.warnings.insert(r.warnings.begin(), warnings.begin(), warnings.end());
+		return r;
+	}
+
+	Result r;
+	r.warnings = warnings;
+	m_stereo.prepare(stereo, record);
+	r.geometry = m_stereo.geometry();
+
+	r.segments = timed(r.times.lines, [&] {
+		return lvf::lines::ScanLineExtractor(m_options.lines).extract(scan);
+	});
+	const cv::Mat1f modelDisparity = timed(r.times.model, [&] {
+		std::vector<lvf::model::VerticalWall> walls;
+		for (const auto& s : r.segments) walls.push_back({s.start, s.end});
+		r.model = lvf::model::PlanarSceneModel(std::move(walls), m_options.floorHeight);
+		return lvf::evaluation::renderModelDisparity(r.model, r.geometry);
+	});
+	timed(r.times.rectify, [&] {
+		m_stereo.rectify(stereo, r.left, r.right);
+		return 0;
+	});
+	const lvf::evaluation::ModelEvaluator evaluator(m_options.evaluation);
+	r.evaluation = timed(r.times.evaluate, [&] {
+		return evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry);
+	});
+
+	using lvf::evaluation::PixelState;
+	const size_t judged = r.evaluation.count(PixelState::Consistent) +
+		r.evaluation.count(PixelState::Inconsistent);
+	const double inconsistent = judged
+		? double(r.evaluation.count(PixelState::Inconsistent)) / double(judged)
+		: 0.0;
+	if (inconsistent > m_options.maxInconsistentFraction)
+	{
+		Result fallback = laserOnly(scan, record + ": " + std::to_string(int(100 * inconsistent)) +
+			"% of the judged pixels contradict the laser model: stereo calibration "
+			"suspect, laser only");
+		fallback.warnings.insert(fallback.warnings.begin(), r.warnings.begin(), r.warnings.end());
+		fallback.segments = std::move(r.segments);
+		fallback.model = std::move(r.model);
+		fallback.geometry = r.geometry;
+		fallback.left = r.left;
+		fallback.right = r.right;
+		fallback.evaluation = std::move(r.evaluation);
+		fallback.times = r.times;
+		return fallback;
+	}
+
+	r.search = timed(r.times.search, [&] {
+		return lvf::depth::FocusedEpipolarSearch(m_options.depth)
+			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band);
+	});
+	r.fused = timed(r.times.fuse, [&] {
+		const ScanFusion fusion(m_options.fusion);
+		r.visualRanges = fusion.visualRanges(scan, r.search.points);
+		return ScanFusion::fuse(scan, r.visualRanges);
+	});
+	return r;
+}
+
+}  // namespace lvf::fusion

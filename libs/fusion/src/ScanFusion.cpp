@@ -1,0 +1,107 @@
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/fusion/ScanFusion.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lvf::fusion
+{
+using lvf::common::writeOption;
+
+void ScanFusion::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	lvf::common::IniSection ini(source, section);
+	minPoints = ini.integer("min_points", minPoints, 1, 10000);
+	clusterTolerance = ini.real("cluster_tolerance", clusterTolerance, 0, 10);
+	centreSlack = ini.real("centre_slack", centreSlack, 0, 0.5);
+	ini.rejectUnknownKeys();
+}
+
+void ScanFusion::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	writeOption(c, s, "min_points", minPoints, "visual points a bearing needs before vision may shorten it");
+	writeOption(c, s, "cluster_tolerance", clusterTolerance, "those points must lie within this span of range [m]");
+	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin");
+}
+
+std::vector<float> ScanFusion::visualRanges(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const std::vector<lvf::depth::VisualPoint>& points) const
+{
+	struct Hit
+	{
+		float range;
+		float offset;  //!< bearing minus the bin's own bearing, in bin steps
+	};
+	const size_t n = laser.getScanSize();
+	std::vector<std::vector<Hit>> perBearing(n);
+	const double step = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
+	for (const auto& p : points)
+	{
+		// Into the laser's frame, projected onto its (horizontal) plane.
+		const auto s = laser.sensorPose.inverseComposePoint({p.robot.x(), p.robot.y(), p.robot.z()});
+		double bearing = std::atan2(s.y, s.x);
+		if (!laser.rightToLeft) bearing = -bearing;
+		const double index = (bearing + 0.5 * laser.aperture) / step;
+		const long i = std::lround(index);
+		if (i < 0 || i >= static_cast<long>(n)) continue;
+		perBearing[static_cast<size_t>(i)].push_back(
+			{static_cast<float>(std::hypot(s.x, s.y)), static_cast<float>(index - double(i))});
+	}
+	std::vector<float> out(n, std::numeric_limits<float>::infinity());
+	const size_t need = static_cast<size_t>(m_options.minPoints);
+	const float slack = static_cast<float>(m_options.centreSlack);
+	for (size_t i = 0; i < n; i++)
+	{
+		auto& hits = perBearing[i];
+		if (hits.size() < need) continue;
+		std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.range < b.range; });
+		// The nearest run of at least `need` points spanning at most the
+		// tolerance in range...
+		for (size_t k = 0; k + need <= hits.size(); k++)
+		{
+			if (hits[k + need - 1].range - hits[k].range > m_options.clusterTolerance) continue;
+			size_t end = k + need;
+			while (end < hits.size() && hits[end].range - hits[k].range <= m_options.clusterTolerance) end++;
+			// ...that also covers the bin's own bearing: at an obstacle's edge
+			// a bin may hold points from beside its ray, which the ray misses.
+			float lo = 1, hi = -1;
+			for (size_t j = k; j < end; j++) lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset);
+			if (lo > slack || hi < -slack) continue;
+			// The range along the bin's own ray: on a slanted face the points
+			// differ in range with bearing, so look at those nearest the bin's
+			// bearing; of them the nearest, since a horizontal surface (a table
+			// top seen from above) starts at its nearest point.
+			std::sort(hits.begin() + long(k), hits.begin() + long(end), [](const Hit& a, const Hit& b) {
+				return std::abs(a.offset) < std::abs(b.offset);
+			});
+			float nearest = hits[k].range;
+			for (size_t j = k; j < k + need; j++) nearest = std::min(nearest, hits[j].range);
+			out[i] = nearest;
+			break;
+		}
+	}
+	return out;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr ScanFusion::fuse(
+	const mrpt::obs::CObservation2DRangeScan& laser, const std::vector<float>& visual)
+{
+	auto fused = std::make_shared<mrpt::obs::CObservation2DRangeScan>(laser);
+	fused->sensorLabel = "FUSED";
+	for (size_t i = 0; i < fused->getScanSize(); i++)
+	{
+		const float laserRange = laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange;
+		if (i < visual.size() && visual[i] < laserRange)
+		{
+			fused->setScanRange(i, visual[i]);
+			fused->setScanRangeValidity(i, true);
+		}
+	}
+	return fused;
+}
+
+}  // namespace lvf::fusion

@@ -1,0 +1,145 @@
+// lvf-fuse as a user runs it: outputs MRPT's tools open; a bad file or option
+// is one line, exit status 2 and nothing written; a bad frame is one warning
+// line and the rest of the log is still fused.
+
+#include "CliTestSupport.h"
+#include "TestWorlds.h"
+
+#include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/simulation/WorldLoader.h>
+
+using namespace lvf::test;
+using lvf::simulation::CStereoLaserSimulator;
+
+namespace
+{
+class LvfFuseCli : public CliTest
+{
+   protected:
+	RunResult fuse(const std::string& args) const { return run(LVF_FUSE_BIN, args); }
+
+	/** A rawlog of the two-cube scene, `frames` poses along x, each frame
+	 * passed through `spoil(k, frame)` first. */
+	template <typename Spoil>
+	fs::path writeLog(const std::string& name, size_t frames, Spoil&& spoil) const
+	{
+		auto world = lvf::simulation::loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/two_cubes.yaml");
+		world.path.clear();
+		for (size_t k = 0; k < frames; k++) world.path.emplace_back(0.05 * double(k), 0, 0);
+		CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
+		const fs::path path = m_dir / name;
+		lvf::common::RawlogWriter out(path.string(), lvf::common::RawlogFormat::Observations);
+		for (size_t k = 0; k < frames; k++)
+		{
+			auto f = sim.simulateNextFrame(false);
+			spoil(k, f);
+			out.append({f.timestamp, f.odometry, {f.scan, f.stereo}});
+		}
+		return path;
+	}
+};
+
+size_t countLines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
+{
+	const auto r = fuse("--input " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(r.err, "");
+	EXPECT_NE(r.out.find("recall"), std::string::npos) << "truth scans beside the sample are used";
+	for (const char* f : {"two_cubes_fused.rawlog", "two_cubes_laser.gridmap.gz", "two_cubes_fused.gridmap.gz",
+						  "two_cubes_grids.png", "two_cubes_frames.csv"})
+		EXPECT_TRUE(fs::exists(m_dir / "out" / f)) << f;
+	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/two_cubes_fused.rawlog");
+	ASSERT_EQ(info.status, 0) << info.err;
+	const auto counts = labelCounts(info.out);
+	for (const char* label : {"LASER", "STEREO", "FUSED", "EVAL"}) EXPECT_EQ(counts.at(label), 1) << label;
+	// Header + one frame, with the truth columns filled in.
+	const std::string csv = slurp(m_dir / "out/two_cubes_frames.csv");
+	EXPECT_EQ(countLines(csv), 2u);
+	EXPECT_EQ(csv.find(",,"), std::string::npos) << csv;
+}
+
+TEST_F(LvfFuseCli, DumpConfigIsTheShippedFusionIni)
+{
+	const auto r = fuse("--dump-config");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(keyLines(r.out), keyLines(slurp(std::string(LVF_SHARE_DIR) + "/config/fusion.ini")));
+}
+
+TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
+{
+	const auto notRawlog = write("notes.rawlog", "this is not a rawlog\n");
+	const auto laserOnly = writeLog("laser_only.rawlog", 2, [](size_t, CStereoLaserSimulator::Frame& f) {
+		f.stereo->timestamp = mrpt::Clock::fromDouble(mrpt::Clock::toDouble(f.stereo->timestamp) + 5.0);
+	});
+	const auto badKey = write("key.ini", "[FocusedEpipolarSearch]\nz_mx = 4\n");
+	const auto badValue = write("value.ini", "[ModelEvaluator]\nwindow_size = 8\n");
+	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog";
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{"--input /nonexistent.rawlog", "/nonexistent.rawlog: input rawlog not found"},
+		{"--input " + notRawlog.string(), "notes.rawlog: record 0: not an MRPT object: corrupt, truncated or not a rawlog"},
+		{"--input " + laserOnly.string(), "laser_only.rawlog: no laser scan has a stereo pair within 0.050 s (2 scans, 2 stereo pairs)"},
+		{"--input " + sample + " --config " + badKey.string(), "key.ini: [FocusedEpipolarSearch] z_mx: unknown key"},
+		{"--input " + sample + " --config " + badValue.string(), "value.ini: [ModelEvaluator] window_size: must be odd"},
+		{"--input " + sample + " --max-time-diff -1", "--max-time-diff: must be >= 0"},
+		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: cannot open truth scan file"},
+	};
+	for (const auto& [args, expected] : cases)
+	{
+		const auto r = fuse(args + " --outdir out");
+		EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+		EXPECT_EQ(countLines(r.err), 1u) << args << "\n" << r.err;
+		EXPECT_EQ(r.err.rfind("lvf-fuse: error: ", 0), 0u) << r.err;
+		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
+	}
+}
+
+TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
+{
+	// Frame k is spoiled in way k; frame 0 and the last one are good.
+	const auto log = writeLog("spoilt.rawlog", 9, [](size_t k, CStereoLaserSimulator::Frame& f) {
+		auto& s = *f.stereo;
+		auto& scan = *f.scan;
+		switch (k)
+		{
+			case 1: s.hasImageRight = false, s.imageRight = mrpt::img::CImage(); break;
+			case 2: s.imageLeft = mrpt::img::CImage(320, 240, mrpt::img::CH_GRAY); break;
+			case 3: s.leftCamera.fx(0); break;
+			case 4:
+				scan.setScanRange(10, std::numeric_limits<float>::quiet_NaN());
+				scan.setScanRange(11, std::numeric_limits<float>::infinity());
+				scan.setScanRange(12, -1.f);
+				break;
+			case 5: scan.resizeScan(0); break;
+			case 6:
+				for (size_t i = 0; i < scan.getScanSize(); i++) scan.setScanRangeValidity(i, false);
+				break;
+			case 7:	 // a calibration so wrong that everything contradicts it
+				s.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));
+				break;
+			default: break;
+		}
+	});
+	const auto r = fuse("--input " + log.string() + " --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	const std::vector<std::string> expected{
+		"frame 1: stereo observation has no right image (laser only)",
+		"frame 2: left image: 320x240 pixels, but the calibration says 640x480 (laser only)",
+		"frame 3: left camera: focal length must be positive and finite",
+		"frame 4: scan LASER: 3 rays with NaN, infinite or non-positive range, treated as no return",
+		"frame 5: scan LASER: has no rays (laser only)",
+		"frame 6: scan LASER has no valid range: no model to check, laser only",
+		"frame 7: ",  // "NN% of the judged pixels contradict the laser model"
+	};
+	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
+	for (const auto& e : expected)
+		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
+	EXPECT_NE(r.err.find("contradict the laser model: stereo calibration suspect, laser only"), std::string::npos);
+	EXPECT_NE(r.out.find("9 fused frames"), std::string::npos) << r.out;
+	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 9);
+}

@@ -1,0 +1,205 @@
+// Stage 3 on simulated stereo with ground-truth depth: rectification puts
+// known points where the rectified geometry says, and the NCC evaluation
+// flags exactly the pixels where the laser's model is wrong.
+
+#include "TestWorlds.h"
+
+#include <gtest/gtest.h>
+#include <lvfusion/evaluation/ModelDisparity.h>
+#include <lvfusion/evaluation/ModelEvaluator.h>
+#include <mrpt/core/bits_math.h>
+#include <opencv2/imgproc.hpp>
+
+using namespace lvf::evaluation;
+using lvf::simulation::CStereoLaserSimulator;
+using lvf::simulation::World;
+
+namespace
+{
+struct Scene
+{
+	CStereoLaserSimulator::Frame frame;
+	RectifiedStereo stereo;
+	cv::Mat1b left, right;
+	ModelEvaluation eval;
+};
+
+/** Simulates the world (YAML) and evaluates the room's exact model on it. */
+Scene evaluate(const std::string& worldYaml)
+{
+	Scene s;
+	CStereoLaserSimulator sim(lvf::test::worldFromText(worldYaml), CStereoLaserSimulator::TOptions());
+	s.frame = sim.simulateNextFrame(true);
+	s.stereo.prepare(*s.frame.stereo, "frame 0");
+	s.stereo.rectify(*s.frame.stereo, s.left, s.right);
+	s.eval = ModelEvaluator().evaluate(
+		s.left, s.right, renderModelDisparity(lvf::test::roomModel(), s.stereo.geometry()),
+		s.stereo.geometry());
+	return s;
+}
+
+/** Pixels where the model depth is wrong by more than 5 cm + 5 %, and where
+ * it is right, both shrunk by the NCC window so no window straddles both. */
+void truthMasks(const Scene& s, cv::Mat1b& modelWrong, cv::Mat1b& modelRight)
+{
+	const double fB = s.stereo.geometry().fB();
+	modelWrong = cv::Mat1b::zeros(s.left.size());
+	modelRight = cv::Mat1b::zeros(s.left.size());
+	for (int v = 0; v < s.left.rows; v++)
+		for (int u = 0; u < s.left.cols; u++)
+		{
+			const float d = s.eval.modelDisparity(v, u);
+			const float zTrue = s.frame.leftDepth(v, u);
+			if (d <= 0 || !std::isfinite(zTrue)) continue;
+			const double zModel = fB / d;
+			(std::abs(zTrue - zModel) > 0.05 + 0.05 * zModel ? modelWrong : modelRight)(v, u) = 255;
+		}
+	const cv::Mat kernel = cv::Mat::ones(11, 11, CV_8U);
+	cv::erode(modelWrong, modelWrong, kernel);
+	cv::erode(modelRight, modelRight, kernel);
+}
+
+/** Fraction of the mask's verifiable pixels in `state`; with `texturedOnly`
+ * of its judged pixels (verifiable and textured). */
+double fraction(
+	const Scene& s, const cv::Mat1b& mask, PixelState state, size_t* judged = nullptr,
+	bool texturedOnly = true)
+{
+	size_t n = 0, k = 0;
+	for (int v = 0; v < mask.rows; v++)
+		for (int u = 0; u < mask.cols; u++)
+		{
+			const auto st = static_cast<PixelState>(s.eval.state(v, u));
+			if (!mask(v, u) || st == PixelState::Unverifiable) continue;
+			if (!texturedOnly || st != PixelState::Untextured || state == PixelState::Untextured) n++;
+			k += st == state;
+		}
+	if (judged) *judged = n;
+	return n ? double(k) / double(n) : 0.0;
+}
+
+}  // namespace
+
+TEST(RectifiedStereo, ParallelUndistortedRigIsUsedAsIs)
+{
+	CStereoLaserSimulator sim(lvf::test::worldFromText(lvf::test::roomWorld("")), CStereoLaserSimulator::TOptions());
+	const auto f = sim.simulateNextFrame(false);
+	RectifiedStereo stereo;
+	stereo.prepare(*f.stereo, "frame 0");
+	EXPECT_FALSE(stereo.remaps());
+	const auto& g = stereo.geometry();
+	EXPECT_DOUBLE_EQ(g.f, 450);
+	EXPECT_DOUBLE_EQ(g.cx, 319.5);
+	EXPECT_DOUBLE_EQ(g.cxOffset, 0);
+	EXPECT_NEAR(g.baseline, 0.12, 1e-12);
+	EXPECT_EQ(g.leftPose, mrpt::poses::CPose3D(f.stereo->cameraPose));
+}
+
+TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDisparity)
+{
+	World world = lvf::test::worldFromText(lvf::test::wallWorld(
+		2.5, "{kind: checker, scale: 0.25, albedo: 0.5, contrast: 0.4}"));
+	auto opt = lvf::test::noiseFreeOptions();
+	opt.stereo.poseX = opt.stereo.poseY = 0;
+	opt.stereo.poseZ = 1.5;
+	opt.stereo.tiltDeg = 0;
+	opt.stereo.dist = {-0.2, 0.05, 0.001, -0.001, 0};
+	opt.stereo.rightYawDeg = -1.5;	// toed in
+	opt.stereo.rightPitchDeg = 0.6;
+	opt.stereo.rightRollDeg = 0.8;
+	opt.stereo.supersampling = 3;
+	CStereoLaserSimulator sim(world, opt);
+	const auto f = sim.simulateNextFrame(false);
+	RectifiedStereo stereo;
+	stereo.prepare(*f.stereo, "frame 0");
+	ASSERT_TRUE(stereo.remaps());
+	cv::Mat1b left, right;
+	stereo.rectify(*f.stereo, left, right);
+	const auto& g = stereo.geometry();
+
+	size_t corners = 0;
+	double worstRow = 0, worstDisparity = 0, sumRow = 0;
+	for (int k = -6; k <= 6; k++)
+		for (int m = -4; m <= 4; m++)
+		{
+			const auto p = g.leftPose.inverseComposePoint({2.5, k * 0.25, 1.5 + m * 0.25});
+			const cv::Point2f expectedL(
+				static_cast<float>(g.f * p.x / p.z + g.cx), static_cast<float>(g.f * p.y / p.z + g.cy));
+			const cv::Point2f expectedR(
+				static_cast<float>(expectedL.x - g.fB() / p.z + g.cxOffset), expectedL.y);
+			if (std::min({expectedL.x, expectedR.x, expectedL.y}) < 15 ||
+				std::max(expectedL.x, expectedR.x) > g.size.width - 16 || expectedL.y > g.size.height - 16)
+				continue;
+			std::vector<cv::Point2f> l{expectedL + cv::Point2f(1.2f, -1.2f)}, r{expectedR + cv::Point2f(-1.2f, 1.2f)};
+			const cv::TermCriteria stop(cv::TermCriteria::EPS | cv::TermCriteria::COUNT, 100, 1e-4);
+			cv::cornerSubPix(left, l, cv::Size(5, 5), cv::Size(-1, -1), stop);
+			cv::cornerSubPix(right, r, cv::Size(5, 5), cv::Size(-1, -1), stop);
+			EXPECT_LT(cv::norm(l[0] - expectedL), 0.5) << k << "," << m;
+			EXPECT_LT(std::abs(l[0].y - r[0].y), 0.6) << "rows differ at " << k << "," << m;
+			EXPECT_LT(std::abs((l[0].x - r[0].x) - (expectedL.x - expectedR.x)), 0.5);
+			worstRow = std::max(worstRow, double(std::abs(l[0].y - r[0].y)));
+			sumRow += l[0].y - r[0].y;
+			worstDisparity = std::max(
+				worstDisparity, double(std::abs((l[0].x - r[0].x) - (expectedL.x - expectedR.x))));
+			corners++;
+		}
+	EXPECT_GT(corners, 40u);
+	// Corner localisation in resampled images adds its own error; on average
+	// the rows must agree far better than the 0.6 px bound per corner.
+	EXPECT_LT(std::abs(sumRow / corners), 0.1);
+	std::cout << corners << " corners; mean row difference " << sumRow / corners
+			  << " px; worst row difference " << worstRow
+			  << " px, worst disparity error " << worstDisparity << " px\n";
+}
+
+TEST(ModelEvaluation, FlagsTheFloatingBoxAndNothingElse)
+{
+	// A textured box floating at 0.5..0.9 m, 2 m ahead: not in the model.
+	const Scene s = evaluate(lvf::test::roomWorld("  - {pose: [2.0, 0.2, 0], size: [0.5, 0.6, 0.4], elevation: 0.5}\n"));
+	cv::Mat1b wrong, right;
+	truthMasks(s, wrong, right);
+	size_t nWrong = 0, nRight = 0;
+	const double detected = fraction(s, wrong, PixelState::Inconsistent, &nWrong);
+	const double falseAlarms = fraction(s, right, PixelState::Inconsistent, &nRight);
+	std::cout << "inconsistent: " << detected * 100 << " % of " << nWrong
+			  << " model-wrong pixels, " << falseAlarms * 100 << " % of " << nRight
+			  << " model-right pixels\n";
+	EXPECT_GT(nWrong, 3000u);
+	EXPECT_GT(nRight, 100000u);
+	// Misses: where the box's texture, shifted by the model's wrong
+	// disparity, still resembles itself. False alarms: wall pixels the box
+	// occludes in the right image (the model is right, the views differ).
+	EXPECT_GT(detected, 0.93);
+	EXPECT_LT(falseAlarms, 0.015);
+}
+
+TEST(ModelEvaluation, UntexturedSurfacesAreNotJudged)
+{
+	// The far wall (in the model) and a floating box (not in it) have no
+	// texture: neither may be called inconsistent for lack of evidence. The
+	// box's face edges are real evidence, so only its faces' interiors count.
+	std::string yaml = lvf::test::roomWorld(
+		"  - {pose: [2.0, 0.2, 0], size: [0.5, 0.6, 0.4], elevation: 0.5, texture: none}\n");
+	yaml.replace(yaml.find("to: [5.05, 3.05]}"), 17, "to: [5.05, 3.05], texture: none}");
+	const Scene s = evaluate(yaml);
+	cv::Mat1b wrong, right, flat;
+	truthMasks(s, wrong, right);
+	// Interiors of flat regions: no edge within the NCC window.
+	cv::Mat1b edges;
+	cv::Canny(s.left, edges, 20, 40);
+	cv::dilate(edges, edges, cv::Mat::ones(13, 13, CV_8U));
+	cv::bitwise_not(edges, flat);
+	cv::Mat1b flatWrong = wrong & flat, flatRight = right & flat;
+	size_t nBox = 0, nWall = 0;
+	const double boxUntextured = fraction(s, flatWrong, PixelState::Untextured);
+	const double boxInconsistent = fraction(s, flatWrong, PixelState::Inconsistent, &nBox, false);
+	const double wallInconsistent = fraction(s, flatRight, PixelState::Inconsistent, &nWall, false);
+	std::cout << "textureless box interior: " << boxUntextured * 100 << " % untextured, "
+			  << boxInconsistent * 100 << " % inconsistent; model-right flat pixels: "
+			  << wallInconsistent * 100 << " % inconsistent\n";
+	EXPECT_GT(nBox, 2000u);
+	EXPECT_GT(nWall, 20000u);
+	EXPECT_GT(boxUntextured, 0.95);
+	EXPECT_LT(boxInconsistent, 0.02);
+	EXPECT_LT(wallInconsistent, 0.01);
+}

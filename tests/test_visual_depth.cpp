@@ -1,0 +1,110 @@
+// Stages 4-5 on simulated scenes whose laser model is exact (the room's
+// walls), so that what is measured is the focused epipolar search and the
+// scan fusion alone: recall of what the laser misses, no phantoms, accurate
+// ranges, against the simulator's truth scan.
+
+#include "TestWorlds.h"
+
+#include <gtest/gtest.h>
+#include <lvfusion/depth/DisparityInterval.h>
+#include <lvfusion/evaluation/ModelDisparity.h>
+#include <lvfusion/fusion/ScanFusion.h>
+#include <lvfusion/metrics/ScanMetrics.h>
+
+using namespace lvf;
+using lvf::simulation::CStereoLaserSimulator;
+
+namespace
+{
+struct Outcome
+{
+	metrics::FusionScore score;
+	depth::DepthSearchStats stats;
+};
+
+Outcome run(const std::string& boxes, const depth::FocusedEpipolarSearch::TOptions& opt = {})
+{
+	const auto world = lvf::test::worldFromText(lvf::test::roomWorld(boxes));
+	CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
+	const auto f = sim.simulateNextFrame(false);
+	evaluation::RectifiedStereo stereo;
+	stereo.prepare(*f.stereo, "frame 0");
+	cv::Mat1b left, right;
+	stereo.rectify(*f.stereo, left, right);
+	const evaluation::ModelEvaluator evaluator;
+	const auto eval = evaluator.evaluate(
+		left, right, evaluation::renderModelDisparity(lvf::test::roomModel(), stereo.geometry()), stereo.geometry());
+	const HeightBand band{world.robot.obstacleMinHeight, world.robot.height};
+	const auto found = depth::FocusedEpipolarSearch(opt).search(
+		left, right, eval, evaluator.options().windowSize, stereo.geometry(), band);
+	const fusion::ScanFusion fusion;
+	const auto fused = fusion::ScanFusion::fuse(*f.scan, fusion.visualRanges(*f.scan, found.points));
+	const auto inView = metrics::bearingsInView(*f.scan, f.truthScan, *f.stereo, band, opt.zMax);
+	return {metrics::scoreFusedScan(*f.scan, *fused, f.truthScan, inView, opt.zMax), found.stats};
+}
+
+void report(const char* what, const Outcome& o)
+{
+	std::cout << what << ": hidden " << o.score.hidden << ", recall " << o.score.recall()
+			  << ", phantom rate " << o.score.phantomRate() << " of " << o.score.inView
+			  << ", hidden range error " << o.score.hiddenRangeErrorMedian << " m; searched "
+			  << o.stats.searchedPixels << " px, " << o.stats.disparitiesTested
+			  << " NCC, accepted " << o.stats.accepted << " (weak " << o.stats.rejectedWeak
+			  << ", not peak " << o.stats.rejectedNotPeak << ", ambiguous "
+			  << o.stats.rejectedAmbiguous << ", out of band " << o.stats.rejectedOutOfBand << ")\n";
+}
+
+}  // namespace
+
+TEST(DisparitySet, CriteriaCombineIntoIntervals)
+{
+	depth::DisparitySet s({1, 100});
+	s.intersect({5, 50});  // c
+	s.remove(10, 20);  // a: not within d_allow of the model
+	ASSERT_EQ(s.size(), 2u);
+	EXPECT_EQ(s[0].lo, 5);
+	EXPECT_EQ(s[0].hi, 10);
+	EXPECT_EQ(s[1].lo, 20);
+	EXPECT_EQ(s[1].hi, 50);
+	EXPECT_EQ(s.integerCount(), 6u + 31u);
+	s.intersect({30, 1e9});	 // b: in front of the model
+	ASSERT_EQ(s.size(), 1u);
+	EXPECT_EQ(s[0].lo, 30);
+	s.intersect({60, 70});
+	EXPECT_TRUE(s.empty());
+}
+
+TEST(VisualDepth, FindsFloatingBoxesTheLaserMisses)
+{
+	// Four layouts of boxes floating in the band, scored together.
+	metrics::FusionScore total;
+	for (const char* boxes :
+		 {"  - {pose: [2.0, 0.5, 0], size: [0.5, 0.6, 0.4], elevation: 0.5}\n"
+		  "  - {pose: [3.0, -0.8, 30], size: [0.6, 0.4, 0.3], elevation: 0.8}\n"
+		  "  - {pose: [1.5, -0.3, 0], size: [0.3, 0.3, 0.2], elevation: 0.6}\n",
+		  "  - {pose: [2.5, 0.0, 10], size: [0.8, 0.5, 0.3], elevation: 0.7}\n"
+		  "  - {pose: [3.5, 1.2, -20], size: [0.5, 0.5, 0.5], elevation: 0.3}\n",
+		  "  - {pose: [1.8, -0.9, 45], size: [0.4, 0.4, 0.4], elevation: 0.5}\n"
+		  "  - {pose: [2.8, 0.8, 0], size: [0.3, 0.9, 0.2], elevation: 0.9}\n",
+		  "  - {pose: [4.0, -0.5, 5], size: [1.0, 0.4, 0.3], elevation: 0.6}\n"
+		  "  - {pose: [2.2, 1.0, 60], size: [0.5, 0.3, 0.3], elevation: 0.4}\n"})
+	{
+		const Outcome o = run(boxes);
+		report("floating boxes", o);
+		total.add(o.score);
+	}
+	std::cout << "all: hidden " << total.hidden << ", recall " << total.recall() << ", phantom rate "
+			  << total.phantomRate() << " of " << total.inView << ", hidden range error "
+			  << total.hiddenRangeErrorMedian << " m\n";
+	EXPECT_GT(total.hidden, 80u);
+	EXPECT_GE(total.recall(), 0.9);
+	EXPECT_LE(total.phantomRate(), 0.02);
+	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
+}
+
+TEST(VisualDepth, TexturelessObstaclesGiveNoPhantoms)
+{
+	const Outcome o = run("  - {pose: [2.0, 0.5, 0], size: [0.5, 0.6, 0.4], elevation: 0.5, texture: none}\n");
+	report("textureless box", o);
+	EXPECT_LE(o.score.phantomRate(), 0.02);
+}
