@@ -1,6 +1,7 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/depth/DisparityInterval.h>
+#include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 #include <opencv2/imgproc.hpp>
 
@@ -54,15 +55,55 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 namespace
 {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-/** Right-image columns to test for left pixel column u, from the disparity
- * set (d = u + cxOffset - column), clipped to where a window fits. */
-struct ColumnRange
-{
-	int lo, hi;
-};
-
 }  // namespace
+
+DisparitySet FocusedEpipolarSearch::allowedDisparities(
+	int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
+	int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const
+{
+	const double fB = g.fB();
+	// Disparities whose right window lies inside the image.
+	DisparitySet set({std::max(0.5, u + g.cxOffset - (g.size.width - 1 - half)), u + g.cxOffset - half});
+	if (m_options.criterionC) set.intersect({fB / m_options.zMax, fB / m_options.zMin});
+	if (modelDisparity > 0)
+	{
+		const double zModel = fB / modelDisparity;
+		if (m_options.criterionB) set.intersect({modelDisparity, kInfinity});
+		if (m_options.criterionA)
+			set.remove(
+				fB / (zModel + m_options.dAllow),
+				zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity);
+	}
+	if (m_options.boundByBand)
+	{
+		// Height along the ray: camera.z + Z ray.z, for depth Z.
+		if (std::abs(ray.z()) < 1e-12)
+		{
+			if (!band.contains(camera.z())) set.intersect({1, 0});
+		}
+		else
+		{
+			const double z1 = (band.low - camera.z()) / ray.z(), z2 = (band.high - camera.z()) / ray.z();
+			const double zNear = std::min(z1, z2), zFar = std::max(z1, z2);
+			if (zFar <= 0) set.intersect({1, 0});
+			else set.intersect({fB / zFar, zNear > 0 ? fB / zNear : kInfinity});
+		}
+	}
+	return set;
+}
+
+bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
+	EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const
+{
+	// Its own peak's shoulders, which descend from it, do not count.
+	scores.compute(xNear, xFar);
+	int peakLo = bestX, peakHi = bestX;
+	while (peakLo - 1 >= xNear && scores.at(peakLo - 1) < scores.at(peakLo)) peakLo--;
+	while (peakHi + 1 <= xFar && scores.at(peakHi + 1) < scores.at(peakHi)) peakHi++;
+	for (int x = xNear; x <= xFar; x++)
+		if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin) return false;
+	return true;
+}
 
 FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const cv::Mat1b& left, const cv::Mat1b& right,
@@ -73,69 +114,28 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
 	const cv::Size window(windowSize, windowSize);
-	const float area = static_cast<float>(windowSize * windowSize);
-
-	cv::Mat1f L, R, meanR, meanRR;
+	cv::Mat1f L, R, meanR, meanRR, rightVariance;
 	left.convertTo(L, CV_32F);
 	right.convertTo(R, CV_32F);
 	cv::blur(R, meanR, window);
 	cv::blur(R.mul(R), meanRR, window);
+	rightVariance = meanRR - meanR.mul(meanR);
+	EpipolarScores scores(L, R, meanR, rightVariance, half);
 
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
 	const double fB = g.fB();
+	const int context = m_options.peakContext;
 
-	// NCC of the left window at (u, v) with the right window at (x, v).
-	auto ncc = [&](int u, int v, int x, float meanL, float stdL) -> float {
-		float sum = 0;
-		for (int dy = -half; dy <= half; dy++)
-		{
-			const float* l = L.ptr<float>(v + dy) + u - half;
-			const float* r = R.ptr<float>(v + dy) + x - half;
-			for (int k = 0; k < windowSize; k++) sum += l[k] * r[k];
-		}
-		const float mR = meanR(v, x);
-		const float varR = meanRR(v, x) - mR * mR;
-		if (varR <= 1e-3f) return -1.f;
-		return (sum / area - meanL * mR) / (stdL * std::sqrt(varR));
-	};
-
-	std::vector<float> scores;
 	for (int v = half; v < H - half; v += m_options.pixelStride)
 		for (int u = half; u < W - half; u += m_options.pixelStride)
 		{
 			if (evaluation.state(v, u) != static_cast<uint8_t>(PixelState::Inconsistent) ||
 				evaluation.leftStd(v, u) < m_options.minTextureStd)
 				continue;
-			// Disparities whose right window lies inside the image.
-			DisparitySet set({std::max(0.5, u + g.cxOffset - (W - 1 - half)), u + g.cxOffset - half});
-			if (m_options.criterionC) set.intersect({fB / m_options.zMax, fB / m_options.zMin});
 			const double dModel = evaluation.modelDisparity(v, u);
-			if (dModel > 0)
-			{
-				const double zModel = fB / dModel;
-				if (m_options.criterionB) set.intersect({dModel, kInfinity});
-				if (m_options.criterionA)
-					set.remove(
-						fB / (zModel + m_options.dAllow),
-						zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity);
-			}
 			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
-			if (m_options.boundByBand)
-			{
-				// Height along the ray: C.z + Z ray.z, for depth Z.
-				if (std::abs(ray.z()) < 1e-12)
-				{
-					if (!band.contains(C.z())) set.intersect({1, 0});
-				}
-				else
-				{
-					const double z1 = (band.low - C.z()) / ray.z(), z2 = (band.high - C.z()) / ray.z();
-					const double zNear = std::min(z1, z2), zFar = std::max(z1, z2);
-					if (zFar <= 0) set.intersect({1, 0});
-					else set.intersect({fB / zFar, zNear > 0 ? fB / zNear : kInfinity});
-				}
-			}
+			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band);
 			if (set.empty() || set.integerCount() == 0)
 			{
 				out.stats.skippedEmptyRange++;
@@ -143,26 +143,21 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			}
 			out.stats.searchedPixels++;
 
-			const float meanL = evaluation.leftMean(v, u), stdL = evaluation.leftStd(v, u);
-			// Score every right column in the allowed set (column x holds
-			// disparity u + cxOffset - x: columns decrease as d grows).
+			// Score the allowed columns, plus some context beyond each bound
+			// (column x holds disparity u + cxOffset - x).
+			scores.reset(u, v, evaluation.leftMean(v, u), evaluation.leftStd(v, u));
+			auto column = [&](double d) { return u + g.cxOffset - d; };
+			const int xFirst = static_cast<int>(std::ceil(column(set[set.size() - 1].hi)));
+			const int xLast = static_cast<int>(std::floor(column(set[0].lo)));
+			scores.compute(xFirst - context, xLast + context);
 			int bestX = -1;
 			float best = -2.f;
-			scores.assign(static_cast<size_t>(W), std::numeric_limits<float>::quiet_NaN());
-			const int context = m_options.peakContext;
 			for (size_t k = 0; k < set.size(); k++)
 			{
-				const int xLo = static_cast<int>(std::ceil(u + g.cxOffset - set[k].hi));
-				const int xHi = static_cast<int>(std::floor(u + g.cxOffset - set[k].lo));
-				for (int x = std::max(xLo - context, half); x <= std::min(xHi + context, W - 1 - half); x++)
-				{
-					if (std::isnan(scores[x]))
-					{
-						scores[x] = ncc(u, v, x, meanL, stdL);
-						out.stats.disparitiesTested++;
-					}
-					if (x >= xLo && x <= xHi && scores[x] > best) best = scores[x], bestX = x;
-				}
+				const int xLo = std::max(static_cast<int>(std::ceil(column(set[k].hi))), scores.firstColumn());
+				const int xHi = std::min(static_cast<int>(std::floor(column(set[k].lo))), scores.lastColumn());
+				for (int x = xLo; x <= xHi; x++)
+					if (scores.at(x) > best) best = scores.at(x), bestX = x;
 			}
 			if (bestX < 0) continue;
 			if (best < m_options.acceptNcc)
@@ -170,73 +165,50 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 				out.stats.rejectedWeak++;
 				continue;
 			}
-			// A true peak: both neighbours lower, scored even if outside the set.
-			auto scoreAt = [&](int x) {
-				if (x < half || x > W - 1 - half) return -2.f;
-				if (std::isnan(scores[x])) scores[x] = ncc(u, v, x, meanL, stdL);
-				return scores[x];
-			};
-			const float before = scoreAt(bestX - 1), after = scoreAt(bestX + 1);
+			// A true peak: both neighbours lower, even if outside the set.
+			const float before = scores.at(bestX - 1), after = scores.at(bestX + 1);
 			if (before >= best || after >= best)
 			{
 				out.stats.rejectedNotPeak++;
 				continue;
 			}
-			// Unique: no other local maximum close to it.
+			// Unique within the stretch searched: no other local maximum close to it.
 			bool ambiguous = false;
-			for (int x = half + 1; x < W - 1 - half && !ambiguous; x++)
-				if (std::abs(x - bestX) > 1 && !std::isnan(scores[x]) &&
-					scores[x] > best - m_options.uniquenessMargin &&
-					!(scores[x - 1] > scores[x]) && !(scores[x + 1] > scores[x]))
-					ambiguous = true;
-			if (ambiguous)
-			{
-				out.stats.rejectedAmbiguous++;
-				continue;
-			}
+			for (int x = std::max(xFirst - context, scores.firstColumn()) + 1;
+				 x < std::min(xLast + context, scores.lastColumn()) && !ambiguous; x++)
+				ambiguous = std::abs(x - bestX) > 1 && scores.at(x) > best - m_options.uniquenessMargin &&
+					scores.at(x - 1) <= scores.at(x) && scores.at(x + 1) <= scores.at(x);
 			// The laser's model must explain the pixel clearly worse: if the
 			// right image matches about as well at the model's own disparity
 			// (best of a few columns, for its sub-pixel error), the evidence
 			// does not favour an obstacle.
-			if (dModel > 0)
+			if (!ambiguous && dModel > 0)
 			{
-				const int xModel = static_cast<int>(std::lround(u + g.cxOffset - dModel));
-				float modelScore = -2.f;
-				for (int x = xModel - 2; x <= xModel + 2; x++) modelScore = std::max(modelScore, scoreAt(x));
-				if (modelScore > best - m_options.uniquenessMargin)
-				{
-					out.stats.rejectedAmbiguous++;
-					continue;
-				}
+				const int xModel = static_cast<int>(std::lround(column(dModel)));
+				scores.compute(xModel - 2, xModel + 2);
+				for (int x = xModel - 2; x <= xModel + 2 && !ambiguous; x++)
+					ambiguous = scores.at(x) > best - m_options.uniquenessMargin;
 			}
 			// Where the criteria cut the true match away (it lies behind the
 			// model, or farther than z_max), a side lobe can win inside the
-			// set. So a candidate must also beat every other peak of the
-			// epipolar line, from twice z_max to z_min (its own peak's
-			// shoulders, which descend from it, do not count).
-			if (m_options.verifyFullLine)
+			// set: a candidate must also beat every other peak of the line,
+			// from twice z_max to z_min.
+			if (!ambiguous && m_options.verifyFullLine)
+				ambiguous = !beatsTheRestOfTheLine(
+					scores, bestX, best,
+					static_cast<int>(std::ceil(column(fB / m_options.zMin))),
+					static_cast<int>(std::floor(column(fB / (2 * m_options.zMax)))));
+			if (ambiguous)
 			{
-				const int xFar = std::min(W - 1 - half, static_cast<int>(std::floor(u + g.cxOffset - fB / (2 * m_options.zMax))));
-				const int xNear = std::max(half, static_cast<int>(std::ceil(u + g.cxOffset - fB / m_options.zMin)));
-				int peakLo = bestX, peakHi = bestX;
-				while (peakLo - 1 >= xNear && scoreAt(peakLo - 1) < scoreAt(peakLo)) peakLo--;
-				while (peakHi + 1 <= xFar && scoreAt(peakHi + 1) < scoreAt(peakHi)) peakHi++;
-				bool beaten = false;
-				for (int x = xNear; x <= xFar && !beaten; x++)
-					if (x < peakLo || x > peakHi) beaten = scoreAt(x) > best - m_options.uniquenessMargin;
-				if (beaten)
-				{
-					out.stats.rejectedAmbiguous++;
-					continue;
-				}
+				out.stats.rejectedAmbiguous++;
+				continue;
 			}
 			// Parabola through the peak and its neighbours.
 			const float curvature = before - 2 * best + after;
 			const float shift = curvature < 0 ? 0.5f * (before - after) / curvature : 0.f;
 			const double disparity = u + g.cxOffset - (bestX + shift);
 			if (disparity <= 0) continue;
-			const double Z = fB / disparity;
-			const Eigen::Vector3d p = C + Z * ray;
+			const Eigen::Vector3d p = C + (fB / disparity) * ray;
 			if (!band.contains(p.z()))
 			{
 				out.stats.rejectedOutOfBand++;
@@ -246,6 +218,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 								  static_cast<float>(disparity), best, p});
 			out.stats.accepted++;
 		}
+	out.stats.disparitiesTested = scores.evaluations();
 	return out;
 }
 

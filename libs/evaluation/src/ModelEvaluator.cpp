@@ -37,18 +37,16 @@ ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
 
-	// Where the model sends each left pixel in the right image (same row).
-	cv::Mat1f mapX(size), mapY(size);
-	cv::Mat1b unverifiable(size);
-	for (int v = 0; v < size.height; v++)
-		for (int u = 0; u < size.width; u++)
-		{
-			const float d = modelDisparity(v, u);
-			const float x = static_cast<float>(u - d + geometry.cxOffset);
-			mapX(v, u) = x;
-			mapY(v, u) = static_cast<float>(v);
-			unverifiable(v, u) = (d <= 0 || x < 0 || x > size.width - 1) ? 255 : 0;
-		}
+	// Where the model sends each left pixel in the right image (same row),
+	// whole-image operations throughout (OpenCV vectorises them).
+	cv::Mat1f columns(1, size.width), rows(size.height, 1);
+	for (int u = 0; u < size.width; u++) columns(0, u) = static_cast<float>(u);
+	for (int v = 0; v < size.height; v++) rows(v, 0) = static_cast<float>(v);
+	cv::Mat1f mapX, mapY;
+	cv::repeat(columns, size.height, 1, mapX);
+	cv::repeat(rows, 1, size.width, mapY);
+	mapX = mapX - modelDisparity + static_cast<float>(geometry.cxOffset);
+	cv::Mat1b unverifiable = (modelDisparity <= 0) | (mapX < 0) | (mapX > size.width - 1);
 	cv::Mat1f rightF, warped;
 	right.convertTo(rightF, CV_32F);  // interpolate without rounding to 8 bits
 	cv::remap(rightF, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
@@ -64,31 +62,24 @@ ModelEvaluation ModelEvaluator::evaluate(
 	cv::blur(warped.mul(warped), meanWW, window);
 	cv::blur(L.mul(warped), meanLW, window);
 
-	out.ncc.create(size);
-	out.leftStd.create(size);
-	out.state.create(size);
-	const float minVar = static_cast<float>(m_options.minTextureStd * m_options.minTextureStd);
-	const float threshold = static_cast<float>(m_options.nccThreshold);
-	for (int v = 0; v < size.height; v++)
-		for (int u = 0; u < size.width; u++)
-		{
-			const float mL = out.leftMean(v, u), mW = meanW(v, u);
-			const float varL = std::max(0.f, meanLL(v, u) - mL * mL);
-			const float varW = std::max(0.f, meanWW(v, u) - mW * mW);
-			out.leftStd(v, u) = std::sqrt(varL);
-			// A flat right window against a textured left one is a mismatch,
-			// not a lack of evidence: its NCC is taken as 0.
-			const float ncc = varW < minVar
-				? 0.f
-				: (meanLW(v, u) - mL * mW) / std::sqrt(varL * varW + 1e-6f);
-			out.ncc(v, u) = ncc;
-			PixelState s = PixelState::Consistent;
-			if (unverifiable(v, u)) s = PixelState::Unverifiable;
-			else if (varL < minVar) s = PixelState::Untextured;
-			else if (ncc < threshold) s = PixelState::Inconsistent;
-			out.state(v, u) = static_cast<uint8_t>(s);
-			out.counts[static_cast<size_t>(s)]++;
-		}
+	const cv::Mat1f varL = cv::max(meanLL - out.leftMean.mul(out.leftMean), 0.0);
+	const cv::Mat1f varW = cv::max(meanWW - meanW.mul(meanW), 0.0);
+	cv::sqrt(varL, out.leftStd);
+	cv::Mat1f denominator;
+	cv::sqrt(varL.mul(varW) + 1e-6, denominator);
+	cv::divide(meanLW - out.leftMean.mul(meanW), denominator, out.ncc);
+	const double minVar = m_options.minTextureStd * m_options.minTextureStd;
+	// A flat right window against a textured left one is a mismatch, not a
+	// lack of evidence: its NCC is taken as 0.
+	out.ncc.setTo(0, varW < minVar);
+
+	// States, the later rules overriding the earlier ones.
+	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::Consistent));
+	out.state.setTo(static_cast<uint8_t>(PixelState::Inconsistent), out.ncc < m_options.nccThreshold);
+	out.state.setTo(static_cast<uint8_t>(PixelState::Untextured), varL < minVar);
+	out.state.setTo(static_cast<uint8_t>(PixelState::Unverifiable), unverifiable);
+	for (size_t k = 0; k < out.counts.size(); k++)
+		out.counts[k] = static_cast<size_t>(cv::countNonZero(out.state == static_cast<uint8_t>(k)));
 	return out;
 }
 

@@ -17,6 +17,8 @@
 // robot's height band.
 
 #include <lvfusion/common/HeightBand.h>
+#include <lvfusion/depth/DisparityInterval.h>
+#include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/config/CLoadableOptions.h>
 
@@ -88,6 +90,15 @@ class FocusedEpipolarSearch
 	const TOptions& options() const { return m_options; }
 
    private:
+	/** Criteria a, b, c and the band for the left pixel in column u whose
+	 * ray (robot frame) leaves the camera centre `camera`. */
+	DisparitySet allowedDisparities(
+		int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
+		int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const;
+	/** No other peak of the line within [xNear, xFar] scores within the
+	 * uniqueness margin of `best` at `bestX`. */
+	bool beatsTheRestOfTheLine(EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const;
+
 	TOptions m_options;
 };
 
