@@ -52,12 +52,27 @@ IniSection::IniSection(
 	const mrpt::config::CConfigFileBase& cfg, std::string section)
 	: m_cfg(cfg), m_section(std::move(section)), m_source(configSourceName(cfg))
 {
+	// Keys as stored may carry the column padding writeOption adds (MRPT's
+	// in-memory configs keep it); look them up by their trimmed names.
+	std::vector<std::string> keys;
+	m_cfg.getAllKeys(m_section, keys);
+	for (const auto& stored : keys)
+	{
+		std::string name = stored;
+		name.erase(name.find_last_not_of(" \t") + 1);
+		m_storedKeys[name] = stored;
+	}
 }
 
 bool IniSection::has(const std::string& key)
 {
 	m_readKeys.insert(key);
-	return m_cfg.keyExists(m_section, key);
+	return m_storedKeys.count(key) > 0;
+}
+
+std::string IniSection::value(const std::string& key) const
+{
+	return m_cfg.read_string(m_section, m_storedKeys.at(key), "");
 }
 
 void IniSection::fail(const std::string& key, const std::string& what) const
@@ -68,7 +83,7 @@ void IniSection::fail(const std::string& key, const std::string& what) const
 double IniSection::number(
 	const std::string& key, double minValue, double maxValue, bool integral)
 {
-	const std::string s = m_cfg.read_string(m_section, key, "");
+	const std::string s = value(key);
 	double v = 0;
 	try
 	{
@@ -108,7 +123,7 @@ int IniSection::integer(
 bool IniSection::flag(const std::string& key, bool defaultValue)
 {
 	if (!has(key)) return defaultValue;
-	std::string s = m_cfg.read_string(m_section, key, "");
+	std::string s = value(key);
 	std::transform(s.begin(), s.end(), s.begin(), ::tolower);
 	if (s == "true" || s == "1" || s == "yes" || s == "on") return true;
 	if (s == "false" || s == "0" || s == "no" || s == "off") return false;
@@ -119,14 +134,14 @@ std::string IniSection::text(
 	const std::string& key, const std::string& defaultValue)
 {
 	if (!has(key)) return defaultValue;
-	return m_cfg.read_string(m_section, key, defaultValue);
+	return value(key);
 }
 
 std::vector<double> IniSection::reals(
 	const std::string& key, const std::vector<double>& defaultValue)
 {
 	if (!has(key)) return defaultValue;
-	std::string s = m_cfg.read_string(m_section, key, "");
+	std::string s = value(key);
 	for (auto& c : s)
 		if (c == ',' || c == '[' || c == ']') c = ' ';
 	std::istringstream in(s);
@@ -150,10 +165,8 @@ std::vector<double> IniSection::reals(
 
 void IniSection::rejectUnknownKeys() const
 {
-	std::vector<std::string> keys;
-	m_cfg.getAllKeys(m_section, keys);
-	for (const auto& k : keys)
-		if (!m_readKeys.count(k)) fail(k, "unknown key");
+	for (const auto& [name, stored] : m_storedKeys)
+		if (!m_readKeys.count(name)) fail(name, "unknown key");
 }
 
 void rejectUnknownSections(

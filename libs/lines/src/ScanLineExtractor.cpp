@@ -46,7 +46,7 @@ void ScanLineExtractor::TOptions::saveToConfigFile(
 	writeOption(c, s, "split_distance", splitDistance, "IEPF: split where a point is farther than this from the chord, ~3x range noise [m]");
 	writeOption(c, s, "merge_residual", mergeResidual, "merge adjacent pieces if their union's RMS residual is below this, ~1.5x range noise [m]");
 	writeOption(c, s, "merge_angle_deg", mergeAngleDeg, "... and their directions differ by less than this (or not significantly) [deg]");
-	writeOption(c, s, "merge_gap", mergeGap, "pieces of two clusters merge only across a gap below this (or 3x the point spacing) [m]");
+	writeOption(c, s, "merge_gap", mergeGap, "pieces of two clusters merge only across a gap below this (or what spacing and noise explain) [m]");
 	writeOption(c, s, "min_points", minPoints, "segments have at least this many points; smaller pieces only join neighbouring lines [points]");
 	writeOption(c, s, "min_length", minLength, "drop segments shorter than this [m]");
 }
@@ -205,17 +205,18 @@ class PieceBuilder
 	}
 
 	/** Consecutive pieces may form one line: same cluster, or facing ends
-	 * closer than mergeGap, or than 3x the spacing of the points either
-	 * side if more (a wall seen at grazing incidence far away has its
-	 * returns 0.2 m apart, and noise opens gaps of twice that, which the
-	 * sphere-of-influence graph cuts), but never across more than maxGap. */
+	 * closer than mergeGap, or than what sampling and noise make of a gap
+	 * if more: 3x the spacing of the points either side (a wall seen at
+	 * grazing incidence far away has its returns 0.2 m apart) plus 4 std
+	 * of the noise of two points (which the sphere-of-influence graph
+	 * cuts now and then); but never across more than maxGap. */
 	bool adjacent(const Piece& a, const Piece& b) const
 	{
 		if (a.cluster == b.cluster) return true;
 		const double gap = (m_pts.xy[b.first] - m_pts.xy[a.last]).norm();
 		if (gap > m_o.maxGap) return false;
 		if (gap <= m_o.mergeGap) return true;
-		return gap <= kSamplingGaps * localSpacing(a, b);
+		return gap <= kSamplingGaps * localSpacing(a, b) + 4 * M_SQRT2 * m_noise;
 	}
 
 	/** Median distance between consecutive points among the last 3 of `a`
@@ -357,33 +358,44 @@ class PieceBuilder
 	 * lines: each point within splitDistance of the line it would join
 	 * joins it. (Noise makes IEPF cut a few points off the end of a wall;
 	 * those come back. A lone return off a thin object, or a box side seen
-	 * edge-on, does not.) The points before some cut go to the previous
-	 * piece, the rest to the next; the cut is where the most points find a
-	 * line. Points that find none stay a small piece between the two with
-	 * `keepLeftovers` (small pieces side by side may still make a line of
-	 * their own: a short face that noise split), else they are outliers. */
+	 * edge-on, does not.) Consecutive small pieces go together, so that an
+	 * outlier between a wall and its last returns does not cut them off.
+	 * The points before some cut go to the previous line, the rest to the
+	 * next; the cut is where the most points find a line. Points that find
+	 * none stay a small piece between the two with `keepLeftovers` (small
+	 * pieces side by side may still make a line of their own: a short face
+	 * that noise split), else they are outliers. */
 	void absorbSmallPieces(std::vector<Piece>& pieces, bool keepLeftovers)
 	{
 		std::vector<Piece> out;
 		for (size_t i = 0; i < pieces.size(); i++)
 		{
-			const Piece& t = pieces[i];
-			if (t.size() >= m_minPoints)
+			if (pieces[i].size() >= m_minPoints)
 			{
-				out.push_back(t);
+				out.push_back(pieces[i]);
 				continue;
 			}
+			// The run of small pieces [i, e), each adjacent to the next.
+			size_t e = i + 1;
+			while (e < pieces.size() && pieces[e].size() < m_minPoints &&
+				   adjacent(pieces[e - 1], pieces[e]))
+				e++;
 			Piece* prev = !out.empty() && out.back().size() >= m_minPoints &&
-					adjacent(out.back(), t)
+					adjacent(out.back(), pieces[i])
 				? &out.back()
 				: nullptr;
-			Piece* next = i + 1 < pieces.size() &&
-					pieces[i + 1].size() >= m_minPoints && adjacent(t, pieces[i + 1])
-				? &pieces[i + 1]
+			Piece* next = e < pieces.size() && pieces[e].size() >= m_minPoints &&
+					adjacent(pieces[e - 1], pieces[e])
+				? &pieces[e]
 				: nullptr;
-			std::vector<size_t> idx;
-			for (size_t k = t.first; k <= t.last; k++)
-				if (!m_outlier[k]) idx.push_back(k);
+			std::vector<size_t> idx, from;	// point, and its piece
+			for (size_t j = i; j < e; j++)
+				for (size_t k = pieces[j].first; k <= pieces[j].last; k++)
+					if (!m_outlier[k])
+					{
+						idx.push_back(k);
+						from.push_back(j);
+					}
 			const size_t m = idx.size();
 			const LineFit lp = prev ? fitLine(prev->moments) : LineFit();
 			const LineFit ln = next ? fitLine(next->moments) : LineFit();
@@ -416,10 +428,10 @@ class PieceBuilder
 					joined[j] = true;
 				}
 			}
-			// What joined neither: between the two lines' new ends it may
-			// stay a piece, inside a line's range it is an outlier.
-			Piece rest{0, 0, t.cluster, {}, t.trimmed};
-			bool any = false;
+			// What joined neither: between the two lines' new ends it stays
+			// (in the small piece it came from) with keepLeftovers, inside a
+			// line's range it is an outlier.
+			std::vector<Piece> rest;
 			for (size_t j = 0; j < m; j++)
 			{
 				if (joined[j]) continue;
@@ -430,13 +442,16 @@ class PieceBuilder
 					m_outlier[k] = true;
 					continue;
 				}
-				if (!any) rest.first = k;
-				rest.last = k;
-				rest.moments.add(rel(k));
-				any = true;
+				const Piece& source = pieces[from[j]];
+				if (rest.empty() || rest.back().cluster != source.cluster ||
+					(j > 0 && from[j - 1] != from[j]))
+					rest.push_back({k, k, source.cluster, {}, source.trimmed});
+				rest.back().last = k;
+				rest.back().moments.add(rel(k));
 			}
 			if (next) next->moments = momentsOf(next->first, next->last);
-			if (any) out.push_back(rest);
+			out.insert(out.end(), rest.begin(), rest.end());
+			i = e - 1;
 		}
 		// Between two pieces, points that belong to neither are outliers.
 		for (size_t i = 0; i + 1 < out.size(); i++)

@@ -11,6 +11,7 @@
 
 #include <memory>
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -43,6 +44,8 @@ class IniSection
 
    private:
 	bool has(const std::string& key);
+	/** The raw text of a key has() found. */
+	std::string value(const std::string& key) const;
 	/** The value of `key`, parsed completely and range-checked. */
 	double number(
 		const std::string& key, double minValue, double maxValue,
@@ -53,6 +56,7 @@ class IniSection
 	std::string m_section;
 	std::string m_source;
 	std::set<std::string> m_readKeys;
+	std::map<std::string, std::string> m_storedKeys;  // trimmed name -> key as stored
 };
 
 /** Throws InputError naming the first section of `cfg` not in `known`. */

@@ -66,15 +66,17 @@ class ScanLineExtractor
 		double mergeAngleDeg = 15;
 		/** Pieces from different clusters merge only when the last point of
 		 * one and the first of the next are closer than this, or than 3x the
-		 * spacing of the points there if more, and never farther than
-		 * maxGap [m]: bridges a few missing returns on one wall (3 rays at
-		 * 4 m: 0.28 m) and the gaps that noise opens between sparse returns
-		 * at grazing incidence, not a doorway (0.6 m and more). */
+		 * spacing of the points there plus 4 std of the noise of two points
+		 * if more, and never farther than maxGap [m]: bridges a few missing
+		 * returns on one wall (3 rays at 4 m: 0.28 m) and the gaps that
+		 * noise opens between sparse returns at grazing incidence, not a
+		 * doorway (0.6 m and more). */
 		double mergeGap = 0.3;
 		/** Segments with fewer points are dropped [points]. A cluster or an
 		 * IEPF piece with fewer is no line of its own: its points may only
-		 * join a neighbouring line (within splitDistance of it, and across
-		 * no more than mergeGap), or are dropped. */
+		 * join a neighbouring line (within splitDistance of it, and no
+		 * farther from its end than pieces may be to merge, see mergeGap),
+		 * or are dropped. */
 		int minPoints = 5;
 		/** Segments shorter than this are dropped [m]. */
 		double minLength = 0.15;

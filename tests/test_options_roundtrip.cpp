@@ -1,0 +1,71 @@
+// Every configuration written by saveToConfigFile (what --dump-config prints)
+// loads back to the same options, in memory and through text, and a key
+// nobody reads is refused.
+
+#include <gtest/gtest.h>
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/fusion/CLaserStereoFusion.h>
+#include <lvfusion/simulation/CStereoLaserSimulator.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+namespace
+{
+template <typename Options>
+std::string dump(const Options& o, const std::string& section)
+{
+	mrpt::config::CConfigFileMemory cfg;
+	o.saveToConfigFile(cfg, section);
+	return cfg.getContent();
+}
+
+template <typename Options>
+void expectRoundTrip(Options changed, const std::string& section)
+{
+	mrpt::config::CConfigFileMemory written;
+	changed.saveToConfigFile(written, section);
+	Options inMemory, throughText;
+	inMemory.loadFromConfigFile(written, section);
+	throughText.loadFromConfigFile(mrpt::config::CConfigFileMemory(written.getContent()), section);
+	EXPECT_EQ(dump(inMemory, section), dump(changed, section));
+	EXPECT_EQ(dump(throughText, section), dump(changed, section));
+	EXPECT_NE(dump(changed, section), dump(Options(), section)) << "the test must change something";
+}
+}  // namespace
+
+TEST(Options, SimulatorRoundTrips)
+{
+	lvf::simulation::CStereoLaserSimulator::TOptions o;
+	o.seed = 17;
+	o.stereo.dist = {-0.1, 0.01, 0, 0, 0.001};
+	o.stereo.tiltDeg = 7.5;
+	o.laser.noiseStd = 0.02;
+	o.odometry.yawStdPerMetre = 0.002;
+	expectRoundTrip(o, "CStereoLaserSimulator");
+}
+
+TEST(Options, FusionRoundTrips)
+{
+	lvf::fusion::CLaserStereoFusion::TOptions o;
+	o.band.high = 1.5;
+	o.lines.splitDistance = 0.2;
+	o.evaluation.windowSize = 9;
+	o.depth.criterionB = false;
+	o.depth.zMax = 4.0;
+	o.fusion.minPoints = 4;
+	expectRoundTrip(o, "CLaserStereoFusion");
+}
+
+TEST(Options, UnknownKeyIsRefusedWithItsName)
+{
+	mrpt::config::CConfigFileMemory cfg("[CLaserStereoFusion]\nrobot_hieght = 1.0\n");
+	lvf::fusion::CLaserStereoFusion::TOptions o;
+	try
+	{
+		o.loadFromConfigFile(cfg, "CLaserStereoFusion");
+		FAIL() << "no error";
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		EXPECT_STREQ(e.what(), "<memory>: [CLaserStereoFusion] robot_hieght: unknown key");
+	}
+}
