@@ -133,12 +133,12 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"frame 4: scan LASER: 3 rays with NaN, infinite or non-positive range, treated as no return",
 		"frame 5: scan LASER: has no rays (laser only)",
 		"frame 6: scan LASER has no valid range: no model to check, laser only",
-		"frame 7: ",  // "NN% of the judged pixels contradict the laser model"
+		"frame 7: the images contradict the laser model (",  // "N% of the floor consistent, ..."
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
-	EXPECT_NE(r.err.find("contradict the laser model: stereo calibration suspect, laser only"), std::string::npos);
+	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
 	EXPECT_NE(r.out.find("9 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
 	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 9);

@@ -72,6 +72,17 @@ TEST_F(LvfSimulateCli, WritesRawlogAndGroundTruthThatMrptToolsOpen)
 	EXPECT_EQ(std::count(header.begin(), header.end(), ','), 182);
 }
 
+TEST_F(LvfSimulateCli, RandomWorldsAreNamedBySeedAndReproducible)
+{
+	for (const char* dir : {"a", "b"}) ASSERT_EQ(simulate(std::string("--random-world 3 -q --outdir ") + dir).status, 0);
+	ASSERT_EQ(simulate("--random-world 4 -q --outdir c").status, 0);
+	const std::string a = slurp(m_dir / "a/random_3_truth_scans.csv");
+	EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 3) << "header + the world's 2 poses";
+	EXPECT_EQ(a, slurp(m_dir / "b/random_3_truth_scans.csv")) << "same seed, same world";
+	EXPECT_EQ(slurp(m_dir / "a/random_3.rawlog"), slurp(m_dir / "b/random_3.rawlog"));
+	EXPECT_NE(a, slurp(m_dir / "c/random_4_truth_scans.csv")) << "another seed, another room";
+}
+
 TEST_F(LvfSimulateCli, DumpConfigIsTheShippedSensorsIni)
 {
 	const auto r = simulate("--dump-config");
@@ -109,6 +120,8 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 		{"--world " + goodWorld + " --config " + badHeader.string(), "header.ini: line 1: malformed section header"},
 		{"--world " + goodWorld + " --format bag", "--format: unknown rawlog format 'bag'"},
 		{"--world " + goodWorld + " --frames -3", "--frames: must be >= 0"},
+		{"--random-world -1", "--random-world: must be >= 0"},
+		{"--world " + goodWorld + " --random-world 2", "--random-world: give either --world or --random-world"},
 		{"--no-such-flag", "command line"},
 	};
 	for (const auto& [args, expected] : cases)

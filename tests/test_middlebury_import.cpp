@@ -4,8 +4,8 @@
 // checked against the ground-truth disparity, read here by hand and placed
 // with the rawlog's own calibration and camera pose, i.e. independently of
 // the importer's code. Pipes (no floor in view) and every bad file or option
-// is one line, exit status 2 and nothing written. lvf-fuse's scores on the
-// imports are printed, not asserted: the fusion is still being tuned.
+// is one line, exit status 2 and nothing written. lvf-fuse runs on the
+// imports without falling back to the laser, and its scores are guarded.
 
 #include "CliTestSupport.h"
 
@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 using namespace lvf::test;
 
@@ -453,20 +454,38 @@ TEST_F(MiddleburyImport, EveryBadSceneOrOptionIsOneLineExitTwoAndNothingWritten)
 	EXPECT_NE(noOut.err.find("required arguments missing"), std::string::npos) << noOut.err;
 }
 
-TEST_F(MiddleburyImport, LvfFuseOnTheImportedScenesIsReportedNotJudged)
+/** "recall 0.348 of 23 hidden bearings, phantom rate 0.1310 of 84 in view" */
+std::pair<double, double> recallAndPhantomRate(const std::string& summary)
+{
+	const auto r = summary.find("recall "), p = summary.find("phantom rate ");
+	if (r == std::string::npos || p == std::string::npos) return {-1, -1};
+	return {std::stod(summary.substr(r + 7)), std::stod(summary.substr(p + 13))};
+}
+
+TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 {
 	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
+	// Issue #3's targets on these scenes are recall >= 0.8 and phantom rate
+	// <= 0.05; the fusion does not reach them yet (measured: Motorcycle
+	// 0.348 / 0.131, Recycle 0.472 / 0.027 -- false far-disparity matches on
+	// the motorcycle's dark, glossy parts, and hidden parts standing less
+	// than d_allow in front of the laser's slice). These bounds guard the
+	// present level; tighten them as it improves.
+	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.30, 0.15}}, {"Recycle", {0.40, 0.05}}};
 	for (const auto& name : kFloorScenes)
 	{
+		SCOPED_TRACE(name);
 		const auto imported = import("--scene " + (kScenes / name).string() + " --out in -q");
 		ASSERT_EQ(imported.status, 0) << imported.err;
 		const auto fused = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir fused");
-		// Printed for whoever tunes the fusion; no bound is asserted here.
-		std::cout << "[ lvf-fuse ] " << name << " (exit " << fused.status << "): ";
-		std::istringstream lines(fused.out);
-		for (std::string l; std::getline(lines, l);)
-			if (l.find("recall") != std::string::npos) std::cout << l.substr(l.find_first_not_of(' '));
-		std::cout << "\n";
-		if (!fused.err.empty()) std::cout << "[ lvf-fuse ] " << name << " stderr: " << fused.err;
+		ASSERT_EQ(fused.status, 0) << fused.err;
+		// A cluttered real scene contradicts a floor-and-walls model over most
+		// of the image; that must not pass for a wrong calibration.
+		EXPECT_EQ(fused.err, "") << "no warning, no fall-back to the laser";
+		const auto [recall, phantomRate] = recallAndPhantomRate(fused.out);
+		std::cout << "[ lvf-fuse ] " << name << ": recall " << recall << ", phantom rate " << phantomRate << "\n";
+		EXPECT_GE(recall, floor.at(name).first) << fused.out;
+		EXPECT_LE(phantomRate, floor.at(name).second) << fused.out;
+		EXPECT_GE(phantomRate, 0) << fused.out;
 	}
 }

@@ -7,6 +7,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <cmath>
+
 namespace lvf::apps
 {
 using lvf::evaluation::PixelState;
@@ -36,16 +38,45 @@ FusionOutputs::FusionOutputs(
 	  m_fusedGrid(-5, 5, -5, 5, static_cast<float>(gridResolution))
 {
 	m_csv.open(files.stage(name + "_frames.csv"));
-	m_csv << "frame,timestamp,segments,inconsistent_px,untextured_px,searched_px,ncc_evaluations,"
+	m_csv << "frame,timestamp,segments,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
 			 "visual_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
 			 "hidden_range_error_m\n";
+	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
+	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden\n";
+}
+
+namespace
+{
+/** A range for the CSV: empty where there is none (no return, no point). */
+std::string rangeField(float range, bool valid = true)
+{
+	return valid && std::isfinite(range) ? mrpt::format("%.3f", range) : std::string();
+}
+}  // namespace
+
+void FusionOutputs::addBearings(
+	size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
+	const lvf::fusion::CLaserStereoFusion::Result& r, const std::optional<FrameTruth>& truth)
+{
+	for (size_t i = 0; i < laser.getScanSize(); i++)
+	{
+		m_bearingsCsv << frame << ',' << i << ',' << mrpt::format("%.2f", mrpt::RAD2DEG(laser.getScanAngle(i))) << ','
+					  << rangeField(laser.getScanRange(i), laser.getScanRangeValidity(i)) << ','
+					  << rangeField(i < r.visualRanges.size() ? r.visualRanges[i] : INFINITY) << ','
+					  << rangeField(r.fused->getScanRange(i), r.fused->getScanRangeValidity(i)) << ',';
+		if (truth)
+			m_bearingsCsv << rangeField(truth->ranges[i]) << ',' << int(truth->inView[i]) << ','
+						  << int(truth->hidden[i]) << '\n';
+		else
+			m_bearingsCsv << ",,\n";
+	}
 }
 
 void FusionOutputs::add(
 	size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
 	const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
-	const std::optional<lvf::metrics::FusionScore>& score)
+	const std::optional<FrameTruth>& truth)
 {
 	const mrpt::poses::CPose3D pose(odometry);
 	m_laserGrid.insertObservation(laser, pose);
@@ -56,23 +87,29 @@ void FusionOutputs::add(
 		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
 	const auto& t = r.times;
 	m_csv << mrpt::format(
-		"%zu,%.6f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
+		"%zu,%.6f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
 		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(),
-		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Untextured),
+		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Unmodelled),
+		r.evaluation.count(PixelState::Untextured),
 		r.search.stats.searchedPixels, r.search.stats.disparitiesTested, r.search.points.size(),
 		shortened, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
 		t.fuse, t.total());
-	if (score)
+	if (truth)
+	{
+		const auto& s = truth->score;
 		m_csv << mrpt::format(
-			",%zu,%zu,%.4f,%.4f,%.4f\n", score->inView, score->hidden, score->recall(),
-			score->phantomRate(), score->hiddenRangeErrorMedian);
+			",%zu,%zu,%.4f,%.4f,%.4f\n", s.inView, s.hidden, s.recall(), s.phantomRate(),
+			s.hiddenRangeErrorMedian);
+	}
 	else
 		m_csv << ",,,,,\n";
+	addBearings(frame, laser, r, truth);
 }
 
 void FusionOutputs::close()
 {
 	m_csv.close();
+	m_bearingsCsv.close();
 	cv::Mat panels[2];
 	for (int k = 0; k < 2; k++)
 	{

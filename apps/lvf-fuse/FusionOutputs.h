@@ -4,6 +4,8 @@
 //   NAME_grids.png     laser-only (left) and fused (right), as paper Figs. 9, 11d-e
 //   NAME_frames.csv    per frame: stage times, pixel counts, obstacle counts,
 //                      and recall / phantom rate when a truth scan is known
+//   NAME_bearings.csv  per frame and laser bearing: laser, visual, fused and
+//                      truth range, in view, hidden -- to see where it errs
 
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
@@ -21,6 +23,14 @@ namespace lvf::apps
 mrpt::obs::CObservationImage::Ptr evaluationImage(
 	const lvf::fusion::CLaserStereoFusion::Result& r, mrpt::Clock::time_point stamp);
 
+/** A frame's truth scan and what it says of the fused scan. */
+struct FrameTruth
+{
+	std::vector<float> ranges;	//!< per bearing [m], inf: nothing in the band
+	std::vector<bool> inView, hidden;
+	lvf::metrics::FusionScore score;
+};
+
 class FusionOutputs
 {
    public:
@@ -30,14 +40,18 @@ class FusionOutputs
 	void add(
 		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
 		const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
-		const std::optional<lvf::metrics::FusionScore>& score);
+		const std::optional<FrameTruth>& truth);
 	void close();
 
    private:
 	lvf::common::StagedOutputFiles& m_files;
 	std::string m_name;
 	mrpt::maps::COccupancyGridMap2D m_laserGrid, m_fusedGrid;
-	std::ofstream m_csv;
+	std::ofstream m_csv, m_bearingsCsv;
+
+	void addBearings(
+		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
+		const lvf::fusion::CLaserStereoFusion::Result& r, const std::optional<FrameTruth>& truth);
 };
 
 }  // namespace lvf::apps

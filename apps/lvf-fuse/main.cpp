@@ -134,17 +134,19 @@ int run(int argc, char** argv)
 		fallbacks += r.fellBackToLaser;
 		timeSum += r.times.total();
 
-		std::optional<lvf::metrics::FusionScore> score;
+		std::optional<lvf::apps::FrameTruth> frameTruth;
 		if (const auto* t = lvf::metrics::findTruthScan(truth, mrpt::Clock::toDouble(f.scan->timestamp));
 			t && t->ranges.size() == f.scan->getScanSize())
 		{
-			const auto inView = lvf::metrics::bearingsInView(
-				*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
-			score = lvf::metrics::scoreFusedScan(*f.scan, *r.fused, t->ranges, inView, options.depth.zMax);
-			total.add(*score);
+			auto& ft = frameTruth.emplace();
+			ft.ranges = t->ranges;
+			ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
+			ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
+			ft.score = lvf::metrics::scoreFusedScan(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
+			total.add(ft.score);
 			scored++;
 		}
-		outputs.add(k, *f.scan, r, f.odometry, score);
+		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
 		auto& after = additions[std::max(f.scanEntry, f.stereoEntry)];
 		after.push_back(r.fused);
 		if (!r.left.empty()) after.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
@@ -193,7 +195,7 @@ int run(int argc, char** argv)
 				total.inView, total.rangeErrorMedian, total.hiddenRangeErrorMedian);
 		std::cout << "  wrote " << (outputFile ? argOutput.getValue() : files.finalPath(outName))
 				  << ", " << name << "_{laser,fused}.gridmap.gz, " << name << "_grids.png, "
-				  << name << "_frames.csv in " << files.outputDir() << "\n";
+				  << name << "_{frames,bearings}.csv in " << files.outputDir() << "\n";
 	}
 	return lvf::common::kExitOk;
 }

@@ -13,6 +13,7 @@
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
+#include <lvfusion/simulation/RandomWorld.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -63,6 +64,12 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argWorld(
 		"w", "world", "World file (default: " + kDefaultWorld + ")", false,
 		kDefaultWorld, "FILE.yaml", cmd);
+	TCLAP::ValueArg<int> argRandomWorld(
+		"r", "random-world",
+		"Instead of --world, a seeded random room (floor boxes, floating boxes, "
+		"a table, a wall shelf, some textureless walls: the worlds the tests "
+		"score the fusion on) named random_SEED",
+		false, -1, "SEED", cmd);
 	TCLAP::ValueArg<std::string> argConfig(
 		"c", "config",
 		"Sensor configuration, MRPT INI; keys not given keep their defaults "
@@ -112,7 +119,13 @@ int run(int argc, char** argv)
 	const auto format = lvf::common::parseRawlogFormat(argFormat.getValue(), "--format");
 
 	lvf::registerAllClasses();
-	auto world = lvf::simulation::loadWorldFile(argWorld.getValue());
+	if (argRandomWorld.isSet() && argRandomWorld.getValue() < 0)
+		throw InputError("--random-world", "", "must be >= 0");
+	if (argRandomWorld.isSet() && argWorld.isSet())
+		throw InputError("--random-world", "", "give either --world or --random-world");
+	auto world = argRandomWorld.isSet()
+		? lvf::simulation::generateRandomWorld(static_cast<uint32_t>(argRandomWorld.getValue()))
+		: lvf::simulation::loadWorldFile(argWorld.getValue());
 	if (argFrames.getValue() > 0 &&
 		static_cast<size_t>(argFrames.getValue()) < world.path.size())
 		world.path.resize(static_cast<size_t>(argFrames.getValue()));

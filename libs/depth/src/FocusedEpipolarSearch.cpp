@@ -130,7 +130,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	for (int v = half; v < H - half; v += m_options.pixelStride)
 		for (int u = half; u < W - half; u += m_options.pixelStride)
 		{
-			if (evaluation.state(v, u) != static_cast<uint8_t>(PixelState::Inconsistent) ||
+			const auto state = static_cast<PixelState>(evaluation.state(v, u));
+			if ((state != PixelState::Inconsistent && state != PixelState::Unmodelled) ||
 				evaluation.leftStd(v, u) < m_options.minTextureStd)
 				continue;
 			const double dModel = evaluation.modelDisparity(v, u);

@@ -46,7 +46,8 @@ ModelEvaluation ModelEvaluator::evaluate(
 	cv::repeat(columns, size.height, 1, mapX);
 	cv::repeat(rows, 1, size.width, mapY);
 	mapX = mapX - modelDisparity + static_cast<float>(geometry.cxOffset);
-	cv::Mat1b unverifiable = (modelDisparity <= 0) | (mapX < 0) | (mapX > size.width - 1);
+	const cv::Mat1b unmodelled = modelDisparity <= 0;
+	cv::Mat1b unverifiable = unmodelled | (mapX < 0) | (mapX > size.width - 1);
 	cv::Mat1f rightF, warped;
 	right.convertTo(rightF, CV_32F);  // interpolate without rounding to 8 bits
 	cv::remap(rightF, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
@@ -78,6 +79,7 @@ ModelEvaluation ModelEvaluator::evaluate(
 	out.state.setTo(static_cast<uint8_t>(PixelState::Inconsistent), out.ncc < m_options.nccThreshold);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Untextured), varL < minVar);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Unverifiable), unverifiable);
+	out.state.setTo(static_cast<uint8_t>(PixelState::Unmodelled), unmodelled & (varL >= minVar));
 	for (size_t k = 0; k < out.counts.size(); k++)
 		out.counts[k] = static_cast<size_t>(cv::countNonZero(out.state == static_cast<uint8_t>(k)));
 	return out;
@@ -93,6 +95,7 @@ cv::Mat3b drawEvaluationOverlay(const cv::Mat1b& left, const ModelEvaluation& e)
 			const auto s = static_cast<PixelState>(e.state(v, u));
 			cv::Vec3b& p = out(v, u);
 			if (s == PixelState::Inconsistent) p = cv::Vec3b(p[0] / 3, p[1] / 3, 128 + p[2] / 2);
+			else if (s == PixelState::Unmodelled) p = cv::Vec3b(128 + p[0] / 2, p[1] / 3, 128 + p[2] / 2);
 			else if (s != PixelState::Consistent) p = cv::Vec3b(96 + p[0] / 2, p[1] * 2 / 3, p[2] * 2 / 3);
 		}
 	return out;

@@ -1,6 +1,7 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
+#include <lvfusion/fusion/FloorAgreement.h>
 
 #include <lvfusion/common/InputError.h>
 
@@ -39,6 +40,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);
 	floorHeight = ini.real("floor_height", floorHeight, -100, 100);
+	minFloorAgreement = ini.real("min_floor_agreement", minFloorAgreement, 0, 1);
 	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
 	ini.rejectUnknownKeys();
 	lines.loadFromConfigFile(source, kLines);
@@ -53,7 +55,8 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "obstacle_min_height", band.low, "lower edge of the robot height band [m]");
 	writeOption(c, s, "robot_height", band.high, "upper edge of the band: the robot's height [m]");
 	writeOption(c, s, "floor_height", floorHeight, "floor z in the robot frame [m]");
-	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more inconsistent judged pixels than this: calibration suspect, laser only");
+	writeOption(c, s, "min_floor_agreement", minFloorAgreement, "less of the model's visible floor consistent in the images than this share: calibration suspect, laser only [0..1]");
+	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more of all judged pixels inconsistent than this share: calibration suspect, laser only [0..1]");
 	lines.saveToConfigFile(c, kLines);
 	evaluation.saveToConfigFile(c, kEvaluation);
 	depth.saveToConfigFile(c, kDepth);
@@ -134,11 +137,14 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 	const double inconsistent = judged
 		? double(r.evaluation.count(PixelState::Inconsistent)) / double(judged)
 		: 0.0;
-	if (inconsistent > m_options.maxInconsistentFraction)
+	const FloorAgreement floor = floorAgreement(r.geometry, r.evaluation, m_options.floorHeight);
+	const bool floorContradicted = floor.judged >= TOptions::kMinJudgedFloorPixels &&
+		floor.fraction() < m_options.minFloorAgreement;
+	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)
 	{
-		Result fallback = laserOnly(scan, record + ": " + std::to_string(int(100 * inconsistent)) +
-			"% of the judged pixels contradict the laser model: stereo calibration "
-			"suspect, laser only");
+		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" +
+			std::to_string(int(100 * floor.fraction())) + "% of the floor consistent, " + std::to_string(int(100 * inconsistent)) +
+			"% of the judged pixels inconsistent): stereo calibration suspect, laser only");
 		fallback.warnings.insert(fallback.warnings.begin(), r.warnings.begin(), r.warnings.end());
 		fallback.segments = std::move(r.segments);
 		fallback.model = std::move(r.model);

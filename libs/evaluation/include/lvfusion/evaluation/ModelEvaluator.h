@@ -20,7 +20,11 @@ enum class PixelState : uint8_t
 	Consistent = 0,	 //!< the model explains what both cameras see
 	Inconsistent = 1,  //!< it does not: search for depth here (stage 4)
 	Untextured = 2,	 //!< too little texture to tell
-	Unverifiable = 3  //!< no model surface, or its match leaves the right image
+	Unverifiable = 3,  //!< its window mixes in pixels without a match in the right image
+	/** Textured, but the model has no surface along the ray (no laser
+	 * segment in that direction): nothing to compare, and nothing known to
+	 * be there -- stage 4 searches it like an inconsistent pixel. */
+	Unmodelled = 4
 };
 
 struct ModelEvaluation
@@ -29,7 +33,7 @@ struct ModelEvaluation
 	cv::Mat1f ncc;	//!< left vs model-warped right, in [-1, 1]
 	cv::Mat1b state;  //!< PixelState per pixel
 	cv::Mat1f leftMean, leftStd;  //!< window statistics of the left image
-	std::array<size_t, 4> counts{};	 //!< pixels per PixelState
+	std::array<size_t, 5> counts{};	 //!< pixels per PixelState
 
 	size_t count(PixelState s) const { return counts[static_cast<size_t>(s)]; }
 };

@@ -1,0 +1,33 @@
+#include <lvfusion/fusion/FloorAgreement.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace lvf::fusion
+{
+using lvf::evaluation::PixelState;
+
+FloorAgreement floorAgreement(
+	const lvf::evaluation::RectifiedGeometry& g, const lvf::evaluation::ModelEvaluation& evaluation,
+	double floorHeight, int stride)
+{
+	FloorAgreement out;
+	const Eigen::Matrix3d R = g.leftPose.getRotationMatrix().asEigen();
+	const double height = g.leftPose.z() - floorHeight;	 // camera above the floor [m]
+	for (int v = 0; v < g.size.height; v += stride)
+		for (int u = 0; u < g.size.width; u += stride)
+		{
+			const auto state = static_cast<PixelState>(evaluation.state(v, u));
+			if (state != PixelState::Consistent && state != PixelState::Inconsistent) continue;
+			// Depth Z of the floor along this pixel's ray: height + Z ray.z = 0.
+			const double down = -(R * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0)).z();
+			if (down <= 0) continue;
+			const double floorDisparity = g.fB() * down / height;
+			if (std::abs(evaluation.modelDisparity(v, u) - floorDisparity) > 1e-3 * floorDisparity) continue;
+			out.judged++;
+			out.consistent += state == PixelState::Consistent;
+		}
+	return out;
+}
+
+}  // namespace lvf::fusion
