@@ -56,12 +56,13 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	RecordProperty("phantom_rate", std::to_string(total.phantomRate()));
 	EXPECT_GT(total.hidden, 100u);
 	// Issue #3 asks for recall >= 0.90 and phantom rate <= 0.02 here; the
-	// pipeline does not reach that yet (recall 0.78, phantom rate 0.058 when
-	// this was written: false matches above laser-visible boxes, where the
-	// true match lies behind the model and criteria a-c cut it away). These
-	// bounds guard the present level against regressions; tighten them as it
-	// improves. With the exact model (test_visual_depth) the targets are met.
+	// pipeline does not reach that yet (recall 0.757, phantom rate 0.045 when
+	// this was written: thin table tops seen almost edge-on and objects near
+	// z_max are missed, and at 4-5 m a quarter-pixel of disparity is 0.1 m,
+	// the metrics' tolerance). These bounds guard the present level against
+	// regressions; tighten them as it improves. With the exact model
+	// (test_visual_depth) the targets are met.
 	EXPECT_GE(total.recall(), 0.75);
-	EXPECT_LE(total.phantomRate(), 0.07);
+	EXPECT_LE(total.phantomRate(), 0.05);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }

@@ -51,7 +51,8 @@ void report(const char* what, const Outcome& o)
 			  << o.stats.searchedPixels << " px, " << o.stats.disparitiesTested
 			  << " NCC, accepted " << o.stats.accepted << " (weak " << o.stats.rejectedWeak
 			  << ", not peak " << o.stats.rejectedNotPeak << ", ambiguous "
-			  << o.stats.rejectedAmbiguous << ", out of band " << o.stats.rejectedOutOfBand << ")\n";
+			  << o.stats.rejectedAmbiguous << ", out of band " << o.stats.rejectedOutOfBand
+			  << ", left-right " << o.stats.rejectedLeftRight << ")\n";
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	peakContext = ini.integer("peak_context", peakContext, 1, 64);
 	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
 	verifyFullLine = ini.flag("verify_full_line", verifyFullLine);
+	leftRightCheck = ini.flag("left_right_check", leftRightCheck);
 	ini.rejectUnknownKeys();
 }
 
@@ -50,6 +51,7 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "search only windows with at least this std: matching needs more texture than checking [grey levels]");
 	writeOption(c, s, "peak_context", peakContext, "NCC also scored this far outside the allowed range, so a peak cut by a bound is seen [px]");
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
+	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
 }
 
 namespace
@@ -105,6 +107,24 @@ bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 	return true;
 }
 
+bool FocusedEpipolarSearch::findsItsWayBack(
+	EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightVariance, int u, int v,
+	int x, int xNear, int xFar) const
+{
+	// Disparity d pairs left column u' with right column x when
+	// u' = x - cxOffset + d. The disparities verified from u, those of right
+	// columns [xNear, xFar], are d = u + cxOffset - [xNear, xFar]; from x they
+	// reach the left columns u + x - [xFar, xNear].
+	const int lo = u + x - xFar, hi = u + x - xNear;
+	back.reset(x, v, rightMean(v, x), std::sqrt(std::max(rightVariance(v, x), 1e-6f)));
+	back.compute(lo, hi);
+	int bestU = -1;
+	float best = -2.f;
+	for (int c = std::max(lo, back.firstColumn()); c <= std::min(hi, back.lastColumn()); c++)
+		if (back.at(c) > best) best = back.at(c), bestU = c;
+	return std::abs(bestU - u) <= 1;
+}
+
 FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const lvf::evaluation::ModelEvaluation& evaluation, int windowSize,
@@ -121,6 +141,11 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	cv::blur(R.mul(R), meanRR, window);
 	rightVariance = meanRR - meanR.mul(meanR);
 	EpipolarScores scores(L, R, meanR, rightVariance, half);
+	// The same scoring the other way round, for the left-right check: a right
+	// window against the left windows of its row.
+	cv::Mat1f leftVariance;
+	cv::multiply(evaluation.leftStd, evaluation.leftStd, leftVariance);
+	EpipolarScores backScores(R, L, evaluation.leftMean, leftVariance, half);
 
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
@@ -202,6 +227,17 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (ambiguous)
 			{
 				out.stats.rejectedAmbiguous++;
+				continue;
+			}
+			// A window that straddles a depth edge or holds only smooth shading
+			// can match a wrong place well; matched back from there, the right
+			// window then prefers its own true partner over this pixel.
+			if (m_options.leftRightCheck &&
+				!findsItsWayBack(backScores, meanR, rightVariance, u, v, bestX,
+								 static_cast<int>(std::ceil(column(fB / m_options.zMin))),
+								 static_cast<int>(std::floor(column(fB / (2 * m_options.zMax))))))
+			{
+				out.stats.rejectedLeftRight++;
 				continue;
 			}
 			// Parabola through the peak and its neighbours.

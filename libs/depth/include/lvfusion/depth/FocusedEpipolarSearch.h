@@ -44,6 +44,7 @@ struct DepthSearchStats
 	size_t disparitiesTested = 0;  //!< NCC evaluations
 	size_t accepted = 0;  //!< matches kept (in the band)
 	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
+	size_t rejectedLeftRight = 0;  //!< failed the left-right check
 };
 
 class FocusedEpipolarSearch
@@ -67,6 +68,9 @@ class FocusedEpipolarSearch
 		double minTextureStd = 8.0;	 //!< left window std needed to search [grey levels]
 		int peakContext = 8;  //!< NCC also scored this far outside the allowed set [px]
 		bool verifyFullLine = true;	 //!< accepted matches must beat the whole line
+		/** The right window of a match, matched back along the left row over
+		 * the same disparities, must find the left pixel again (+-1 px). */
+		bool leftRightCheck = true;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
@@ -103,6 +107,12 @@ class FocusedEpipolarSearch
 	/** No other peak of the line within [xNear, xFar] scores within the
 	 * uniqueness margin of `best` at `bestX`. */
 	bool beatsTheRestOfTheLine(EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const;
+	/** Left-right check: the right window at column x, scored against the
+	 * left windows of row v over the disparities of right columns
+	 * [xNear, xFar] as seen from u, scores best at u (+-1). */
+	bool findsItsWayBack(
+		EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightVariance, int u,
+		int v, int x, int xNear, int xFar) const;
 
 	TOptions m_options;
 };
