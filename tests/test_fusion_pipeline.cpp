@@ -9,6 +9,10 @@
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/RandomWorld.h>
 
+#include "TestWorlds.h"
+
+#include <cmath>
+
 using namespace lvf;
 
 namespace
@@ -65,4 +69,43 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	EXPECT_GE(total.recall(), 0.75);
 	EXPECT_LE(total.phantomRate(), 0.05);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
+}
+
+TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)
+{
+	// Paper Fig. 3c: the cube on the floor is in the laser's model, so the
+	// cameras agree with it and vision adds no obstacle there. Rooms with
+	// boxes standing on the floor only (some taller than the robot, some
+	// turned) and the default, noisy sensors: every bearing the fused scan
+	// puts nearer than both the truth and the laser is a phantom.
+	const std::vector<std::string> layouts{
+		"  - {pose: [2.2, -0.6, 0], size: [0.5, 0.5, 0.5]}\n"
+		"  - {pose: [3.0, 1.0, 0.4], size: [0.6, 0.4, 1.1]}\n",
+		"  - {pose: [1.8, 0.0, 0.8], size: [0.4, 0.4, 0.7]}\n"
+		"  - {pose: [3.5, -1.5, 0], size: [0.8, 0.5, 1.5]}\n",
+		"  - {pose: [2.5, 1.5, -0.3], size: [1.0, 0.3, 0.9]}\n"
+		"  - {pose: [2.0, -1.2, 0], size: [0.3, 0.3, 0.4]}\n"
+		"  - {pose: [4.0, 0.2, 0], size: [0.5, 0.5, 1.2]}\n"};
+	metrics::FusionScore total;
+	for (const auto& boxes : layouts)
+	{
+		const auto world = lvf::test::worldFromText(lvf::test::roomWorld(boxes));
+		simulation::CStereoLaserSimulator sim(world, simulation::CStereoLaserSimulator::TOptions());
+		const auto f = sim.simulateNextFrame(false);
+		fusion::CLaserStereoFusion fusion;
+		const auto r = fusion.process(*f.scan, *f.stereo, "frame");
+		ASSERT_FALSE(r.fellBackToLaser);
+		const auto inView = metrics::bearingsInView(
+			*f.scan, f.truthScan, *f.stereo, fusion.options().band, fusion.options().depth.zMax);
+		const auto s = metrics::scoreFusedScan(*f.scan, *r.fused, f.truthScan, inView, fusion.options().depth.zMax);
+		EXPECT_EQ(s.hidden, 0u) << "the laser sees every obstacle here";
+		total.add(s);
+	}
+	std::cout << "phantom bearings " << total.phantoms << " of " << total.inView << " in view\n";
+	// The aim is none. Measured: 5 of 148, each on the bearing just beside a
+	// box's silhouette, where a window half on the box is matched at the
+	// box's depth (window-based stereo's "foreground fattening"; a test of
+	// the model's predicted occlusions removed them but cost 6% recall in
+	// the random rooms, see the issue notes). This guards the present level.
+	EXPECT_LE(total.phantomRate(), 0.04);
 }

@@ -2,6 +2,7 @@
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/fusion/FloorAgreement.h>
+#include <lvfusion/fusion/ModelWalls.h>
 
 #include <lvfusion/common/InputError.h>
 
@@ -40,6 +41,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);
 	floorHeight = ini.real("floor_height", floorHeight, -100, 100);
+	facetStrayReturns = ini.flag("facet_stray_returns", facetStrayReturns);
 	minFloorAgreement = ini.real("min_floor_agreement", minFloorAgreement, 0, 1);
 	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
 	ini.rejectUnknownKeys();
@@ -55,6 +57,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "obstacle_min_height", band.low, "lower edge of the robot height band [m]");
 	writeOption(c, s, "robot_height", band.high, "upper edge of the band: the robot's height [m]");
 	writeOption(c, s, "floor_height", floorHeight, "floor z in the robot frame [m]");
+	writeOption(c, s, "facet_stray_returns", facetStrayReturns, "model returns that fit no line segment as narrow walls square to their rays");
 	writeOption(c, s, "min_floor_agreement", minFloorAgreement, "less of the model's visible floor consistent in the images than this share: calibration suspect, laser only [0..1]");
 	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more of all judged pixels inconsistent than this share: calibration suspect, laser only [0..1]");
 	lines.saveToConfigFile(c, kLines);
@@ -117,9 +120,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		return lvf::lines::ScanLineExtractor(m_options.lines).extract(scan);
 	});
 	const cv::Mat1f modelDisparity = timed(r.times.model, [&] {
-		std::vector<lvf::model::VerticalWall> walls;
-		for (const auto& s : r.segments) walls.push_back({s.start, s.end});
-		r.model = lvf::model::PlanarSceneModel(std::move(walls), m_options.floorHeight);
+		r.model = lvf::model::PlanarSceneModel(
+			modelWalls(scan, r.segments, m_options.facetStrayReturns), m_options.floorHeight);
 		return lvf::evaluation::renderModelDisparity(r.model, r.geometry);
 	});
 	timed(r.times.rectify, [&] {

@@ -30,6 +30,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 	{
 		HeightBand band;  //!< obstacle_min_height .. robot_height [m]
 		double floorHeight = 0;	 //!< floor z in the robot frame [m]
+		bool facetStrayReturns = true;	//!< see ModelWalls.h
 		/** The calibration (not the world) is taken to be wrong, and the
 		 * frame falls back to the laser, when less than this share of the
 		 * model's floor looks consistent in the images (FloorAgreement.h;
