@@ -451,7 +451,7 @@ TEST_F(MiddleburyImport, EveryBadSceneOrOptionIsOneLineExitTwoAndNothingWritten)
 	}
 	const auto noOut = import(good);
 	EXPECT_EQ(noOut.status, 2);
-	EXPECT_NE(noOut.err.find("required arguments missing"), std::string::npos) << noOut.err;
+	EXPECT_NE(noOut.err.find("command line: missing required argument(s) --out (see --help)"), std::string::npos) << noOut.err;
 }
 
 /** "recall 0.348 of 23 hidden bearings, phantom rate 0.1310 of 84 in view" */

@@ -43,8 +43,16 @@ namespace
 class OneLineFailureOutput : public TCLAP::StdOutput
 {
    public:
-	void failure(TCLAP::CmdLineInterface&, TCLAP::ArgException& e) override
+	void failure(TCLAP::CmdLineInterface& cmd, TCLAP::ArgException& e) override
 	{
+		// TCLAP says only that "one or more" required arguments are missing:
+		// name them.
+		std::string missing;
+		for (const auto* arg : cmd.getArgList())
+			if (arg->isRequired() && !arg->isSet())
+				missing += (missing.empty() ? "" : ", ") + ("--" + arg->getName());
+		if (!missing.empty())
+			throw InputError("command line", "", "missing required argument(s) " + missing + " (see --help)");
 		throw InputError("command line", e.argId(), e.error() + " (see --help)");
 	}
 };
