@@ -143,3 +143,20 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
 	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 9);
 }
+
+TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)
+{
+	// Frames 1 and 3 have their stereo pair 0.5 s late, farther than the
+	// pairing tolerance (0.05 s) from any scan: their scans go unfused.
+	const auto log = writeLog("late.rawlog", 5, [](size_t k, CStereoLaserSimulator::Frame& f) {
+		if (k == 1 || k == 3) f.stereo->timestamp += std::chrono::milliseconds(500);
+	});
+	const auto r = fuse("--input " + log.string() + " --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("5 scans, 5 stereo pairs, 3 fused frames (2 unpaired scans"), std::string::npos) << r.out;
+	EXPECT_EQ(labelCounts(run(LVF_RAWLOG_EDIT, "--info -i out/late_fused.rawlog").out).at("FUSED"), 3);
+	// A wider tolerance pairs them again.
+	const auto wide = fuse("--input " + log.string() + " --max-time-diff 0.6 --outdir wide");
+	ASSERT_EQ(wide.status, 0) << wide.err;
+	EXPECT_NE(wide.out.find("5 fused frames (0 unpaired scans"), std::string::npos) << wide.out;
+}
