@@ -59,7 +59,7 @@ void VfhParameters::save(
 	writeOption(c, s, "magnitude_a", magnitudeA, "magnitude c^2 (a - b d^2) with a - b window_radius^2 = 1 (VFH+): weight of a certain cell at the robot vs 1 at the edge");
 	if (vehicleKeys)
 		writeOption(c, s, "robot_radius", robotRadius, "obstacles enlarged by robot_radius + safety_distance (VFH+) [" + unit + "]");
-	writeOption(c, s, "safety_distance", safetyDistance, "safety distance d_s added to the robot radius (VFH+) [" + unit + "]");
+	writeOption(c, s, "safety_distance", safetyDistance, "safety distance d_s: obstacle cells enlarged by the robot radius + d_s (VFH+) [" + unit + "]");
 	writeOption(c, s, "smoothing_l", smoothingL, "VFH smoothing window l, 1 = none (VFH+ drops it; VFH used 5) [sectors]");
 	writeOption(c, s, "tau_low", tauLow, "binary histogram: sectors below this are free (hysteresis, VFH+) [magnitude; 1 = certain cell at the edge]");
 	writeOption(c, s, "tau_high", tauHigh, "binary histogram: sectors above this are blocked; in between keep their state [magnitude]");
