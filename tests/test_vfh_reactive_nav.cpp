@@ -19,7 +19,9 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <ostream>
+#include <unistd.h>
 
 using mrpt::math::TPoint2D;
 using mrpt::nav::CAbstractNavigator;
@@ -96,7 +98,13 @@ TEST_P(ReactiveNavWithVfh, ReachesTargetWithoutErrorOrCollision)
 	nav.enableTimeLog(false);
 	nav.enableKeepLogRecords(true);
 	nav.loadConfigFile(cfg);
+	// MRPT caches the PTGs' collision grids as files: keep them out of the
+	// working directory, in a folder of this process.
+	const auto cache = std::filesystem::temp_directory_path() / ("lvf_vfh_ptgs_" + std::to_string(::getpid()));
+	std::filesystem::create_directories(cache);
+	nav.params_abstract_ptg_navigator.ptg_cache_files_directory = cache.string();
 	nav.initialize();
+	std::filesystem::remove_all(cache);
 
 	CAbstractNavigator::TNavigationParams np;
 	np.target.target_coords = mrpt::math::TPose2D(s.target.x, s.target.y, 0);
