@@ -11,12 +11,14 @@
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <lvfusion/vfh/CHolonomicVFH.h>
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/kinematics/CVehicleSimul_DiffDriven.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/nav/reactive/CLogFileRecord.h>
 #include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
 #include <mrpt/nav/reactive/CRobot2NavInterfaceForSimulator.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -74,6 +76,54 @@ class GridRobot : public mrpt::nav::CRobot2NavInterfaceForSimulator_DiffDriven
 	const mrpt::maps::COccupancyGridMap2D& m_grid;
 };
 
+/** MRPT's navigator set up from reactive_vfh.ini over a grid with the
+ * scenario's obstacles, started towards its target. */
+struct GridNavigation
+{
+	mrpt::maps::COccupancyGridMap2D grid{-10, 30, -10, 10, 0.10f};
+	mrpt::kinematics::CVehicleSimul_DiffDriven sim;
+	GridRobot robot{sim, grid};
+	mrpt::nav::CReactiveNavigationSystem nav{robot, false /*console*/};
+
+	/** `navlogDir`: where to write a .reactivenavlog ("" = none). */
+	explicit GridNavigation(const Scenario& s, const std::string& navlogDir = "")
+	{
+		lvf::registerAllClasses();
+		grid.fill(0.9f);  // MRPT grids hold p(free): 0.9 free, 0 occupied
+		for (const auto& b : s.obstacles)
+			for (int cx = grid.x2idx(b.min.x); cx < grid.x2idx(b.max.x); cx++)
+				for (int cy = grid.y2idx(b.min.y); cy < grid.y2idx(b.max.y); cy++) grid.setCell(cx, cy, 0.0f);
+
+		nav.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+		nav.enableTimeLog(false);
+		nav.enableKeepLogRecords(true);
+		if (!navlogDir.empty())
+		{
+			nav.setLogFileDirectory(navlogDir);
+			nav.enableLogFile(true);
+		}
+		nav.loadConfigFile(mrpt::config::CConfigFile(std::string(LVF_SHARE_DIR) + "/config/reactive_vfh.ini"));
+		// MRPT caches the PTGs' collision grids as files: keep them out of
+		// the working directory, in a folder of this process.
+		const auto cache = std::filesystem::temp_directory_path() / ("lvf_vfh_ptgs_" + std::to_string(::getpid()));
+		std::filesystem::create_directories(cache);
+		nav.params_abstract_ptg_navigator.ptg_cache_files_directory = cache.string();
+		nav.initialize();
+		std::filesystem::remove_all(cache);
+
+		CAbstractNavigator::TNavigationParams np;
+		np.target.target_coords = mrpt::math::TPose2D(s.target.x, s.target.y, 0);
+		np.target.targetAllowedDistance = 0.35f;
+		nav.navigate(&np);
+	}
+	~GridNavigation()
+	{
+		// Keep MRPT's timing tables off the test output.
+		const_cast<mrpt::system::CTimeLogger&>(nav.getTimeLogger()).clear(true);
+		const_cast<mrpt::system::CTimeLogger&>(nav.getDelaysTimeLogger()).clear(true);
+	}
+};
+
 class ReactiveNavWithVfh : public ::testing::TestWithParam<Scenario>
 {
 };
@@ -81,35 +131,10 @@ class ReactiveNavWithVfh : public ::testing::TestWithParam<Scenario>
 
 TEST_P(ReactiveNavWithVfh, ReachesTargetWithoutErrorOrCollision)
 {
-	lvf::registerAllClasses();
 	const Scenario& s = GetParam();
-
-	mrpt::maps::COccupancyGridMap2D grid(-10, 30, -10, 10, 0.10f);
-	grid.fill(0.9f);  // MRPT grids hold p(free): 0.9 free, 0 occupied
-	for (const auto& b : s.obstacles)
-		for (int cx = grid.x2idx(b.min.x); cx < grid.x2idx(b.max.x); cx++)
-			for (int cy = grid.y2idx(b.min.y); cy < grid.y2idx(b.max.y); cy++) grid.setCell(cx, cy, 0.0f);
-
-	mrpt::config::CConfigFile cfg(std::string(LVF_SHARE_DIR) + "/config/reactive_vfh.ini");
-	mrpt::kinematics::CVehicleSimul_DiffDriven sim;
-	GridRobot robot(sim, grid);
-	mrpt::nav::CReactiveNavigationSystem nav(robot, false /*console*/);
-	nav.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-	nav.enableTimeLog(false);
-	nav.enableKeepLogRecords(true);
-	nav.loadConfigFile(cfg);
-	// MRPT caches the PTGs' collision grids as files: keep them out of the
-	// working directory, in a folder of this process.
-	const auto cache = std::filesystem::temp_directory_path() / ("lvf_vfh_ptgs_" + std::to_string(::getpid()));
-	std::filesystem::create_directories(cache);
-	nav.params_abstract_ptg_navigator.ptg_cache_files_directory = cache.string();
-	nav.initialize();
-	std::filesystem::remove_all(cache);
-
-	CAbstractNavigator::TNavigationParams np;
-	np.target.target_coords = mrpt::math::TPose2D(s.target.x, s.target.y, 0);
-	np.target.targetAllowedDistance = 0.35f;
-	nav.navigate(&np);
+	GridNavigation run(s);
+	auto& nav = run.nav;
+	auto& sim = run.sim;
 
 	// The footprint of reactive_vfh.ini (x -0.2..0.1, y -0.1..0.1 m), its
 	// outline sampled every 1 cm: the gap to the nearest obstacle box.
@@ -159,9 +184,6 @@ TEST_P(ReactiveNavWithVfh, ReachesTargetWithoutErrorOrCollision)
 	const auto p = sim.getCurrentGTPose();
 	EXPECT_LT((TPoint2D(p.x, p.y) - s.target).norm(), 0.4);
 	if (!s.obstacles.empty()) { EXPECT_GT(clearance, 0.0); }
-	// Keep MRPT's timing tables off the test output.
-	const_cast<mrpt::system::CTimeLogger&>(nav.getTimeLogger()).clear(true);
-	const_cast<mrpt::system::CTimeLogger&>(nav.getDelaysTimeLogger()).clear(true);
 	RecordProperty("final_distance_m", std::to_string((TPoint2D(p.x, p.y) - s.target).norm()));
 	RecordProperty("min_clearance_m", std::to_string(clearance));
 }
@@ -184,4 +206,59 @@ TEST(CHolonomicVfh, CreatedByNameFromMrptRegistry)
 	const auto method = mrpt::nav::CAbstractHolonomicReactiveMethod::Factory("CHolonomicVFH");
 	ASSERT_TRUE(method);
 	EXPECT_TRUE(std::dynamic_pointer_cast<lvf::vfh::CHolonomicVFH>(method));
+}
+
+TEST(ReactiveNavLog, NavlogHoldsVfhRecordsNavlogViewerCanDraw)
+{
+	// What navlog-viewer does with a .reactivenavlog (once the plugin has
+	// registered the classes): read CLogFileRecord objects and, per PTG, draw
+	// HLFR->dirs_eval curves that have one value per TP-obstacle.
+	const auto dir = std::filesystem::temp_directory_path() / ("lvf_vfh_navlog_" + std::to_string(::getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	{
+		GridNavigation run(Scenario{"BehindWall", {6.0, 0.0}, {{{3.0, -1.5}, {3.4, 1.5}}}}, dir.string());
+		for (int i = 0; i < 10; i++)
+		{
+			run.nav.navigationStep();
+			run.sim.simulateOneTimeStep(0.2);
+		}
+	}  // closes the log
+	std::vector<std::filesystem::path> logs;
+	for (const auto& e : std::filesystem::directory_iterator(dir))
+		if (e.path().extension() == ".reactivenavlog") logs.push_back(e.path());
+	ASSERT_EQ(logs.size(), 1u);
+
+	mrpt::io::CFileGZInputStream in(logs[0].string());
+	auto arch = mrpt::serialization::archiveFrom(in);
+	size_t records = 0, vfhRecords = 0;
+	for (;;)
+	{
+		mrpt::serialization::CSerializable::Ptr obj;
+		try
+		{
+			obj = arch.ReadObject();
+		}
+		catch (const mrpt::serialization::CExceptionEOF&)
+		{
+			break;
+		}
+		const auto rec = std::dynamic_pointer_cast<mrpt::nav::CLogFileRecord>(obj);
+		ASSERT_TRUE(rec);
+		records++;
+		for (const auto& info : rec->infoPerPTG)
+		{
+			const auto vfh = std::dynamic_pointer_cast<lvf::vfh::CLogFileRecord_VFH>(info.HLFR);
+			if (!vfh) continue;
+			vfhRecords++;
+			ASSERT_FALSE(vfh->dirs_eval.empty());
+			for (const auto& curve : vfh->dirs_eval) EXPECT_EQ(curve.size(), info.TP_Obstacles.size());
+		}
+	}
+	EXPECT_EQ(records, 10u);
+	// Steps that keep following the last command (MRPT's "NOP") run no
+	// holonomic method; the others run it once for each of the 3 PTGs.
+	EXPECT_GE(vfhRecords, 3u);
+	EXPECT_EQ(vfhRecords % 3, 0u);
+	std::filesystem::remove_all(dir);
 }
