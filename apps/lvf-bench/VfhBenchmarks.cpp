@@ -1,7 +1,9 @@
 // VFH+ cycle figures for lvf-bench (see main.cpp for the reporting):
 //   BM_VfhCycle_GridWindow  one VFH+ cycle of the grid engine on the default
 //                           active window (1.6 m radius over a 10 cm grid):
-//                           window extraction + histograms + decision
+//                           window extraction + histograms + decision;
+//                           ..._Full: every cell of the window occupied, the
+//                           most a cycle can have to do
 //   BM_Holonomic_VFH/VFF/ND MRPT's holonomic-method interface on one and the
 //                           same input (121 TP-obstacles cast in that grid):
 //                           CHolonomicVFH against MRPT's CHolonomicVFF and
@@ -22,6 +24,7 @@ namespace
 struct VfhFixture
 {
 	mrpt::maps::COccupancyGridMap2D grid{-6, 6, -6, 6, 0.10f};
+	mrpt::maps::COccupancyGridMap2D full{-6, 6, -6, 6, 0.10f};
 	mrpt::nav::CAbstractHolonomicReactiveMethod::NavInput tp;
 
 	VfhFixture()
@@ -44,6 +47,7 @@ struct VfhFixture
 		for (size_t i = 0; i < scan.getScanSize(); i++)
 			tp.obstacles.push_back(scan.getScanRangeValidity(i) ? scan.getScanRange(i) / 4.0 : 1.0);
 		tp.targets = {{1.0, 0.0}};
+		full.fill(0.0f);
 	}
 	static VfhFixture& get()
 	{
@@ -52,16 +56,20 @@ struct VfhFixture
 	}
 };
 
-void BM_VfhCycle_GridWindow(benchmark::State& state)
+void vfhCycle(benchmark::State& state, const mrpt::maps::COccupancyGridMap2D& grid)
 {
-	auto& f = VfhFixture::get();
 	lvf::vfh::VfhPlus vfh;
+	size_t cells = 0;
 	for (auto _ : state)
 	{
-		const auto cells = lvf::vfh::activeWindow(f.grid, {0, 0}, vfh.parameters().windowRadius);
-		benchmark::DoNotOptimize(vfh.step(cells, 0.0, 0.0).direction);
+		const auto window = lvf::vfh::activeWindow(grid, {0, 0}, vfh.parameters().windowRadius);
+		benchmark::DoNotOptimize(vfh.step(window, 0.0, 0.0).direction);
+		cells = window.size();
 	}
+	state.counters["obstacle_cells"] = double(cells);
 }
+void BM_VfhCycle_GridWindow(benchmark::State& s) { vfhCycle(s, VfhFixture::get().grid); }
+void BM_VfhCycle_GridWindow_Full(benchmark::State& s) { vfhCycle(s, VfhFixture::get().full); }
 
 template <typename Method>
 void holonomic(benchmark::State& state)
@@ -81,6 +89,7 @@ void BM_Holonomic_ND(benchmark::State& s) { holonomic<mrpt::nav::CHolonomicND>(s
 }  // namespace
 
 BENCHMARK(BM_VfhCycle_GridWindow)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(BM_VfhCycle_GridWindow_Full)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_VFH)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_VFF)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_ND)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
