@@ -257,8 +257,8 @@ TEST(ReactiveNavLog, NavlogHoldsVfhRecordsNavlogViewerCanDraw)
 	}
 	EXPECT_EQ(records, 10u);
 	// Steps that keep following the last command (MRPT's "NOP") run no
-	// holonomic method; the others run it once for each of the 3 PTGs.
-	EXPECT_GE(vfhRecords, 3u);
-	EXPECT_EQ(vfhRecords % 3, 0u);
+	// holonomic method, the others run it for each PTG that can reach the
+	// target: at least one step must have.
+	EXPECT_GE(vfhRecords, 1u);
 	std::filesystem::remove_all(dir);
 }
