@@ -3,9 +3,9 @@
 // (strict INI, shipped defaults in share/lvfusion/config/vfh.ini).
 //
 // TP-space geometry used below: 121 directions, direction i at
-// -180 + (i + 0.5) * 360/121 deg; window 0.4 and safety distance 0.025
+// -180 + (i + 0.5) * 360/121 deg; window 1 and safety distance 0.025
 // (normalised), so a TP-obstacle at 0.2 blocks the sector centres within
-// asin(0.025/0.2) = 7.18 deg of it, with magnitude 2 - 0.2^2 / 0.4^2 = 1.75.
+// asin(0.025/0.2) = 7.18 deg of it, with magnitude 2 - 0.2^2 / 1^2 = 1.96.
 
 #include "CliTestSupport.h"
 
@@ -115,7 +115,7 @@ TEST(CHolonomicVfh, LogRecordShowsTheHistogramPerPtgDirection)
 		ASSERT_EQ(curve.size(), kPaths);
 		for (double v : curve) EXPECT_TRUE(v >= 0 && v <= 1) << v;
 	}
-	// Path 60 (0 deg) is blocked: density 1.75 > tau_high, so free-ness 0,
+	// Path 60 (0 deg) is blocked: density 1.96 > tau_high, so free-ness 0,
 	// masked 0, score 0; path 100 (118.5 deg) is free and far from anything.
 	EXPECT_EQ(log->dirs_eval[0][60], 0.0);
 	EXPECT_EQ(log->dirs_eval[1][60], 0.0);
@@ -124,8 +124,8 @@ TEST(CHolonomicVfh, LogRecordShowsTheHistogramPerPtgDirection)
 	EXPECT_EQ(log->dirs_eval[1][100], 1.0);
 	EXPECT_GT(log->dirs_eval[2][100], 0.0);
 	// Sector 36 (centre 2.5 deg) gets the TP-obstacles within 7.18 deg of it:
-	// paths 59..63 (-2.98, 0, 2.98, 5.95, 8.93 deg), 1.75 each.
-	EXPECT_NEAR(log->primaryHistogram[36], 5 * 1.75, 1e-9);
+	// paths 59..63 (-2.98, 0, 2.98, 5.95, 8.93 deg), 1.96 each.
+	EXPECT_NEAR(log->primaryHistogram[36], 5 * 1.96, 1e-9);
 	EXPECT_NEAR(RAD2DEG(log->chosenDirection), 57.5, 1e-9);
 }
 

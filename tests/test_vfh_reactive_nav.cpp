@@ -7,6 +7,8 @@
 // 0.4 m, the navigator must never report NAV_ERROR, and the robot's
 // footprint must never touch an obstacle.
 
+#include "GridCourses.h"
+
 #include <gtest/gtest.h>
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <lvfusion/vfh/CHolonomicVFH.h>
@@ -30,19 +32,8 @@ using mrpt::nav::CAbstractNavigator;
 
 namespace
 {
-struct Box
-{
-	TPoint2D min, max;
-};
-
-struct Scenario
-{
-	std::string name;
-	TPoint2D target;
-	std::vector<Box> obstacles;
-};
-
-void PrintTo(const Scenario& s, std::ostream* os) { *os << s.name; }
+using lvf::test::Box;
+using Scenario = lvf::test::Course;
 
 /** The robot senses the grid with a 270 deg, 180-ray laser, as MRPT's test. */
 class GridRobot : public mrpt::nav::CRobot2NavInterfaceForSimulator_DiffDriven
@@ -84,15 +75,13 @@ struct GridNavigation
 	mrpt::kinematics::CVehicleSimul_DiffDriven sim;
 	GridRobot robot{sim, grid};
 	mrpt::nav::CReactiveNavigationSystem nav{robot, false /*console*/};
+	std::vector<Box> obstacles;	 //!< as painted into the grid
 
 	/** `navlogDir`: where to write a .reactivenavlog ("" = none). */
 	explicit GridNavigation(const Scenario& s, const std::string& navlogDir = "")
 	{
 		lvf::registerAllClasses();
-		grid.fill(0.9f);  // MRPT grids hold p(free): 0.9 free, 0 occupied
-		for (const auto& b : s.obstacles)
-			for (int cx = grid.x2idx(b.min.x); cx < grid.x2idx(b.max.x); cx++)
-				for (int cy = grid.y2idx(b.min.y); cy < grid.y2idx(b.max.y); cy++) grid.setCell(cx, cy, 0.0f);
+		obstacles = lvf::test::paintCourse(grid, s);
 
 		nav.setMinLoggingLevel(mrpt::system::LVL_ERROR);
 		nav.enableTimeLog(false);
@@ -171,12 +160,7 @@ TEST_P(ReactiveNavWithVfh, ReachesTargetWithoutErrorOrCollision)
 		for (const auto& local : outline)
 		{
 			const TPoint2D q = pose.composePoint(local);
-			for (const auto& b : s.obstacles)
-			{
-				const double dx = std::max({b.min.x - q.x, 0.0, q.x - b.max.x});
-				const double dy = std::max({b.min.y - q.y, 0.0, q.y - b.max.y});
-				clearance = std::min(clearance, std::hypot(dx, dy));
-			}
+			for (const auto& b : run.obstacles) clearance = std::min(clearance, b.distance(q));
 		}
 	}
 	EXPECT_TRUE(vfhLogged) << "the navigator ran CHolonomicVFH";
@@ -196,8 +180,9 @@ INSTANTIATE_TEST_SUITE_P(
 		Scenario{"BlockBeside", {9.0, 4.0}, {{{4.0, -2.0}, {5.0, 2.0}}}},
 		// The target straight behind a wall: a detour is the only way.
 		Scenario{"BehindWall", {6.0, 0.0}, {{{3.0, -1.5}, {3.4, 1.5}}}},
-		// Through a 1.2 m gap between two blocks.
-		Scenario{"ThroughGap", {8.0, 1.0}, {{{4.0, -4.0}, {4.5, 0.4}}, {{4.0, 1.6}, {4.5, 6.0}}}}),
+		// Through a 1.2 m gap between two blocks; the straight line to the
+		// target runs into the lower one.
+		Scenario{"ThroughGap", {8.0, -1.5}, {{{4.0, -4.0}, {4.5, 0.4}}, {{4.0, 1.6}, {4.5, 6.0}}}}),
 	[](const auto& info) { return info.param.name; });
 
 TEST(CHolonomicVfh, CreatedByNameFromMrptRegistry)

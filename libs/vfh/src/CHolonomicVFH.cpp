@@ -13,7 +13,7 @@ namespace lvf::vfh
 VfhParameters CHolonomicVFH::TOptions::tpSpaceDefaults()
 {
 	VfhParameters p;
-	p.windowRadius = 0.4;
+	p.windowRadius = 1.0;
 	p.safetyDistance = 0.025;
 	p.robotRadius = 0;	// in the TP distances already (see the header)
 	p.minTurnRadius = 0;  // in the PTG's trajectories already

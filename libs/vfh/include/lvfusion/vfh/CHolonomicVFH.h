@@ -45,9 +45,14 @@ class CHolonomicVFH : public mrpt::nav::CAbstractHolonomicReactiveMethod
 	/** Section [CHolonomicVFH]; lengths are fractions of maxObstacleDist. */
 	struct TOptions : public mrpt::config::CLoadableOptions
 	{
-		/** The engine's parameters with TP-space defaults: a window of 0.4
-		 * and a safety distance of 0.025 are VFH's 1.6 m and 0.1 m for a
-		 * ref_distance of 4 m (share/lvfusion/config/reactive_vfh.ini). */
+		/** The engine's parameters with TP-space defaults. The window is
+		 * the whole TP-space (1.0): the navigator's ref_distance is already
+		 * the look-ahead, VFH's window's counterpart, and TP distances run
+		 * along curved trajectories. Measured (tests/test_vfh_reactive_nav,
+		 * ref_distance 4 m): with VFH's 1.6 m (0.4) the robot stalled
+		 * against a block with the target behind it; with 0.8 and 1.0 every
+		 * course was completed. Safety distance 0.025: VFH's 0.1 m (one
+		 * cell) at a ref_distance of 4 m. */
 		VfhParameters vfh = tpSpaceDefaults();
 		/** Speed ramps down linearly when the target is nearer than this
 		 * [normalised distance] (as MRPT's VFF: 0.10). */
