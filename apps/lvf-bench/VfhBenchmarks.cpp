@@ -7,7 +7,10 @@
 //   BM_Holonomic_VFH/VFF/ND MRPT's holonomic-method interface on one and the
 //                           same input (121 TP-obstacles cast in that grid):
 //                           CHolonomicVFH against MRPT's CHolonomicVFF and
-//                           CHolonomicND, the baselines.
+//                           CHolonomicND, the baselines;
+//   BM_VfhCycle_TpCells     the VFH+ cycle alone on CHolonomicVFH's cells
+//                           of that input: what the adapter and the log
+//                           record add is the difference.
 
 #include <benchmark/benchmark.h>
 #include <lvfusion/vfh/CHolonomicVFH.h>
@@ -83,6 +86,20 @@ void holonomic(benchmark::State& state)
 		benchmark::DoNotOptimize(out.desiredDirection);
 	}
 }
+void BM_VfhCycle_TpCells(benchmark::State& state)
+{
+	// The cells CHolonomicVFH makes of the TP-obstacles (see its navigate()).
+	auto& f = VfhFixture::get();
+	std::vector<lvf::vfh::ObstacleCell> cells;
+	const size_t n = f.tp.obstacles.size();
+	for (size_t i = 0; i < n; i++)
+	{
+		const double d = f.tp.obstacles[i], a = -M_PI + (double(i) + 0.5) * 2 * M_PI / double(n);
+		if (d < 1.0) cells.push_back({d * std::cos(a), d * std::sin(a), 1.0});
+	}
+	lvf::vfh::VfhPlus vfh(lvf::vfh::CHolonomicVFH::TOptions::tpSpaceDefaults());
+	for (auto _ : state) benchmark::DoNotOptimize(vfh.step(cells, 0.0, 0.0).direction);
+}
 void BM_Holonomic_VFH(benchmark::State& s) { holonomic<lvf::vfh::CHolonomicVFH>(s); }
 void BM_Holonomic_VFF(benchmark::State& s) { holonomic<mrpt::nav::CHolonomicVFF>(s); }
 void BM_Holonomic_ND(benchmark::State& s) { holonomic<mrpt::nav::CHolonomicND>(s); }
@@ -90,6 +107,7 @@ void BM_Holonomic_ND(benchmark::State& s) { holonomic<mrpt::nav::CHolonomicND>(s
 
 BENCHMARK(BM_VfhCycle_GridWindow)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_VfhCycle_GridWindow_Full)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(BM_VfhCycle_TpCells)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_VFH)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_VFF)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_Holonomic_ND)->Unit(benchmark::kMicrosecond)->MinTime(1.0);

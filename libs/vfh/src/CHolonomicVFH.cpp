@@ -65,7 +65,8 @@ VfhPlus& CHolonomicVFH::engine()
 
 namespace
 {
-/** The log's per-PTG-direction curves (see CLogFileRecord_VFH.h). */
+/** The log's per-PTG-direction curves (see CLogFileRecord_VFH.h), each
+ * direction showing its VFH sector's values. */
 void fillDirectionCurves(
 	CLogFileRecord_VFH& log, const VfhPlus::Result& r, const VfhPlus& vfh, size_t directions,
 	double previousDirection)
@@ -73,18 +74,18 @@ void fillDirectionCurves(
 	const auto& s = vfh.sectors();
 	const auto& p = vfh.parameters();
 	const double worst = (p.mu1 + p.mu2 + p.mu3) * double(s.count()) / 2;
-	const double previous = s.coordinate(previousDirection);
+	const double previous = s.coordinate(previousDirection), heading = s.coordinate(0.0);
+	std::vector<double> score(s.count(), 0.0);
+	for (size_t k = 0; k < s.count(); k++)
+		if (!r.masked[k] && worst > 0)
+			score[k] = 1.0 - steeringCost(double(k), s, r.targetCoordinate, heading, previous, p) / worst;
 	log.dirs_eval.assign(3, std::vector<double>(directions, 0.0));
 	for (size_t i = 0; i < directions; i++)
 	{
-		const double a = -M_PI + (double(i) + 0.5) * 2 * M_PI / double(directions);
-		const size_t k = s.sectorOf(a);
+		const size_t k = s.sectorOf(-M_PI + (double(i) + 0.5) * 2 * M_PI / double(directions));
 		log.dirs_eval[0][i] = 1.0 - std::min(1.0, r.primary[k] / p.tauHigh);
 		log.dirs_eval[1][i] = r.masked[k] ? 0.0 : 1.0;
-		if (!r.masked[k] && worst > 0)
-			log.dirs_eval[2][i] = 1.0 -
-				steeringCost(s.coordinate(a), s, r.targetCoordinate, s.coordinate(0.0), previous, p) /
-					worst;
+		log.dirs_eval[2][i] = score[k];
 	}
 }
 }  // namespace

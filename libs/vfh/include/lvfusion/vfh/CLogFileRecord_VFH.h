@@ -6,7 +6,8 @@
 //   [0] free-ness of the primary histogram: 1 - min(1, H^p / tau_high)
 //   [1] the masked histogram: 1 free, 0 blocked
 //   [2] (last, the "final score") 1 - g/g_worst for free directions, g the
-//       VFH+ cost a candidate there would have, 0 where blocked.
+//       VFH+ cost a candidate at the centre of their sector would have,
+//       g_worst = (mu1 + mu2 + mu3) * sectors/2; 0 where blocked.
 // The histograms themselves, per VFH sector, are kept alongside.
 
 #include <mrpt/nav/holonomic/CHolonomicLogFileRecord.h>
