@@ -88,15 +88,7 @@ void holonomic(benchmark::State& state)
 }
 void BM_VfhCycle_TpCells(benchmark::State& state)
 {
-	// The cells CHolonomicVFH makes of the TP-obstacles (see its navigate()).
-	auto& f = VfhFixture::get();
-	std::vector<lvf::vfh::ObstacleCell> cells;
-	const size_t n = f.tp.obstacles.size();
-	for (size_t i = 0; i < n; i++)
-	{
-		const double d = f.tp.obstacles[i], a = -M_PI + (double(i) + 0.5) * 2 * M_PI / double(n);
-		if (d < 1.0) cells.push_back({d * std::cos(a), d * std::sin(a), 1.0});
-	}
+	const auto cells = lvf::vfh::CHolonomicVFH::tpObstacleCells(VfhFixture::get().tp);
 	lvf::vfh::VfhPlus vfh(lvf::vfh::CHolonomicVFH::TOptions::tpSpaceDefaults());
 	for (auto _ : state) benchmark::DoNotOptimize(vfh.step(cells, 0.0, 0.0).direction);
 }

@@ -90,14 +90,8 @@ void fillDirectionCurves(
 }
 }  // namespace
 
-void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
+std::vector<ObstacleCell> CHolonomicVFH::tpObstacleCells(const NavInput& ni)
 {
-	ASSERT_(!ni.obstacles.empty());
-	ASSERT_(!ni.targets.empty());
-	ASSERT_GT_(ni.maxObstacleDist, 0);
-	VfhPlus& vfh = engine();
-
-	// TP-obstacles -> certain cells, lengths as fractions of maxObstacleDist.
 	const size_t n = ni.obstacles.size();
 	std::vector<ObstacleCell> cells;
 	cells.reserve(n);
@@ -108,6 +102,16 @@ void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
 		const double a = -M_PI + (double(i) + 0.5) * 2 * M_PI / double(n);
 		cells.push_back({d * std::cos(a), d * std::sin(a), 1.0});
 	}
+	return cells;
+}
+
+void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
+{
+	ASSERT_(!ni.obstacles.empty());
+	ASSERT_(!ni.targets.empty());
+	ASSERT_GT_(ni.maxObstacleDist, 0);
+	VfhPlus& vfh = engine();
+	const std::vector<ObstacleCell> cells = tpObstacleCells(ni);
 	// MRPT: "if many, last targets have higher priority".
 	const mrpt::math::TPoint2D target = ni.targets.back() * (1.0 / ni.maxObstacleDist);
 	const double targetDirection = std::atan2(target.y, target.x);
@@ -135,7 +139,7 @@ void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
 	log->speedFactor = r.speedFactor;
 	log->tauLow = vfh.parameters().tauLow;
 	log->tauHigh = vfh.parameters().tauHigh;
-	fillDirectionCurves(*log, r, vfh, n, previous);
+	fillDirectionCurves(*log, r, vfh, ni.obstacles.size(), previous);
 	no.logRecord = log;
 }
 

@@ -82,6 +82,10 @@ class CHolonomicVFH : public mrpt::nav::CAbstractHolonomicReactiveMethod
 		options.targetSlowApproachingDistance = dist;
 	}
 
+	/** The adapter's cells: each TP-obstacle nearer than maxObstacleDist as
+	 * a certain cell, lengths in fractions of maxObstacleDist. */
+	static std::vector<ObstacleCell> tpObstacleCells(const NavInput& ni);
+
    private:
 	/** The engine, rebuilt whenever `options.vfh` changed since. */
 	VfhPlus& engine();
