@@ -26,7 +26,11 @@
 //  - the heading is 0 (TP direction 0 is straight ahead) and the previous
 //    direction is the last one returned, in the robot frame of that step:
 //    TP-space moves with the robot, so the mu3 term is an approximation;
-//  - the hysteresis compares sectors of successive robot frames likewise.
+//  - the hysteresis compares sectors of successive robot frames likewise;
+//  - the active window is, by default, the whole TP-space (TOptions says
+//    why);
+//  - speed: VFH's law, times a linear slow-down near the target (as MRPT's
+//    VFF); zero when every direction is blocked.
 // One method object exists per PTG, so each keeps its own VFH+ state.
 
 #include <lvfusion/vfh/CLogFileRecord_VFH.h>
