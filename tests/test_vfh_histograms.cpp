@@ -126,6 +126,24 @@ TEST(VfhSteering, WideValleySteersAtTargetSideBorderPlusHalfSmax)
 	EXPECT_NEAR(costs[1], 117.5, 1e-9);
 }
 
+TEST(VfhSteering, PreviousDirectionKeepsTheChoice)
+{
+	// The cell ahead at 1 m again (candidates +-62.5 deg, sector coordinates
+	// 48 and 23; heading 35.5). Target at +2.5 deg (coordinate 36): a fresh
+	// VFH+ goes left, 5*12 + 2*12.5 + 2*12.5 = 110 against 5*13 + 25 + 25 =
+	// 115. After a cycle that chose the right side (target at -2.5 deg) the
+	// mu3 term makes leaving it cost 2*25 more: right 90, left 135.
+	EXPECT_NEAR(steer({at(0, 1.0)}, 2.5), 62.5, 1e-9);
+	VfhPlus vfh;
+	EXPECT_NEAR(RAD2DEG(vfh.step({at(0, 1.0)}, DEG2RAD(-2.5), 0.0).direction), -62.5, 1e-9);
+	const auto r = vfh.step({at(0, 1.0)}, DEG2RAD(2.5), 0.0);
+	EXPECT_NEAR(RAD2DEG(r.direction), -62.5, 1e-9);
+	double costs[2] = {r.candidates[0].cost, r.candidates[1].cost};
+	std::sort(costs, costs + 2);
+	EXPECT_NEAR(costs[0], 90.0, 1e-9);
+	EXPECT_NEAR(costs[1], 135.0, 1e-9);
+}
+
 TEST(VfhSteering, TargetBehindWallPicksAValleyNotTheWall)
 {
 	// A wall across the way at x = 1 m, y in [-0.5, 0.5] (cells every 2 cm).
