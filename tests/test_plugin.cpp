@@ -4,6 +4,10 @@
 #include <mrpt/rtti/CObject.h>
 #include <mrpt/system/os.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 TEST(Plugin, LoadsAndRegistersClassesByName)
 {
 	const std::string plugin = LVF_PLUGIN_PATH;
@@ -12,14 +16,18 @@ TEST(Plugin, LoadsAndRegistersClassesByName)
 	std::string errors;
 	ASSERT_TRUE(mrpt::system::loadPluginModules(plugin, errors)) << errors;
 
-	for (const char* name :
-		 {"CStereoLaserSimulator", "lvf::simulation::CStereoLaserSimulator"})
+	// (name looked up, class it must create)
+	for (const auto& [name, full] : std::vector<std::pair<std::string, std::string>>{
+			 {"CStereoLaserSimulator", "lvf::simulation::CStereoLaserSimulator"},
+			 {"lvf::simulation::CStereoLaserSimulator", "lvf::simulation::CStereoLaserSimulator"},
+			 {"CLaserStereoFusion", "lvf::fusion::CLaserStereoFusion"},
+			 {"CHolonomicVFH", "lvf::vfh::CHolonomicVFH"},
+			 {"CLogFileRecord_VFH", "lvf::vfh::CLogFileRecord_VFH"}})
 	{
 		const auto* cls = mrpt::rtti::findRegisteredClass(name);
 		ASSERT_NE(cls, nullptr) << name;
 		const auto obj = mrpt::rtti::classFactory(name);
 		ASSERT_TRUE(obj) << name;
-		EXPECT_STREQ(obj->GetRuntimeClass()->className,
-					 "lvf::simulation::CStereoLaserSimulator");
+		EXPECT_EQ(obj->GetRuntimeClass()->className, full);
 	}
 }
