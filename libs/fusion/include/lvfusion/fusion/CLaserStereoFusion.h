@@ -33,6 +33,11 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		/** More inconsistent than this fraction of the judged pixels, and the
 		 * calibration (not the world) is wrong: fall back to the laser. */
 		double maxInconsistentFraction = 0.6;
+		/** Evaluate the model only at the pixels the depth search reads
+		 * (its pixel_stride grid): the same judgement there, several times
+		 * cheaper; the evaluation overlay then shows only those pixels, and
+		 * the fraction above is taken over them. */
+		bool evaluateSearchGridOnly = true;
 		lvf::lines::ScanLineExtractor::TOptions lines;
 		lvf::evaluation::ModelEvaluator::TOptions evaluation;
 		lvf::depth::FocusedEpipolarSearch::TOptions depth;
