@@ -7,19 +7,19 @@ namespace lvf::depth
 {
 namespace
 {
-// Right windows flatter than this (std below 1 grey level) carry no
-// evidence; their NCC would be noise divided by almost nothing.
-constexpr float kMinRightVariance = 1.0f;
+// Right windows flatter than this carry no evidence; their NCC would be
+// noise divided by almost nothing.
+constexpr float kMinRightStd = 1.0f;  // [grey levels]
 constexpr float kNotComputed = std::numeric_limits<float>::quiet_NaN();
 }  // namespace
 
 EpipolarScores::EpipolarScores(
 	const cv::Mat1f& left, const cv::Mat1f& right, const cv::Mat1f& rightMean,
-	const cv::Mat1f& rightVariance, int half)
+	const cv::Mat1f& rightStd, int half)
 	: m_left(left),
 	  m_right(right),
 	  m_rightMean(rightMean),
-	  m_rightVariance(rightVariance),
+	  m_rightStd(rightStd),
 	  m_half(half),
 	  m_scores(static_cast<size_t>(right.cols), kNotComputed)
 {
@@ -86,23 +86,16 @@ void EpipolarScores::compute(int x0, int x1)
 	crossTerms(m_left, m_right, m_u, m_v, x0, n, m_half, acc);
 	const float area = static_cast<float>((2 * m_half + 1) * (2 * m_half + 1));
 	const float* mean = m_rightMean.ptr<float>(m_v);
-	const float* variance = m_rightVariance.ptr<float>(m_v);
+	const float* deviation = m_rightStd.ptr<float>(m_v);
 	for (int x = x0; x <= x1; x++)
 	{
 		float& s = m_scores[static_cast<size_t>(x)];
 		if (std::isnan(s)) m_touched.push_back(x);
-		s = variance[x] < kMinRightVariance
+		s = deviation[x] < kMinRightStd
 			? -1.f
-			: (acc[x - x0] / area - m_leftMean * mean[x]) / (m_leftStd * std::sqrt(variance[x]));
+			: (acc[x - x0] / area - m_leftMean * mean[x]) / (m_leftStd * deviation[x]);
 	}
 	m_evaluations += static_cast<size_t>(n);
-}
-
-float EpipolarScores::at(int x)
-{
-	if (x < firstColumn() || x > lastColumn()) return -2.f;
-	if (std::isnan(m_scores[static_cast<size_t>(x)])) compute(x, x);
-	return m_scores[static_cast<size_t>(x)];
 }
 
 }  // namespace lvf::depth

@@ -114,13 +114,14 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
 	const cv::Size window(windowSize, windowSize);
-	cv::Mat1f L, R, meanR, meanRR, rightVariance;
+	cv::Mat1f L, R, meanR, meanRR, rightStd;
 	left.convertTo(L, CV_32F);
 	right.convertTo(R, CV_32F);
 	cv::blur(R, meanR, window);
 	cv::blur(R.mul(R), meanRR, window);
-	rightVariance = meanRR - meanR.mul(meanR);
-	EpipolarScores scores(L, R, meanR, rightVariance, half);
+	// Rounding can leave a flat window's variance just below 0.
+	cv::sqrt(cv::max(meanRR - meanR.mul(meanR), 0.0), rightStd);
+	EpipolarScores scores(L, R, meanR, rightStd, half);
 
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
