@@ -40,9 +40,10 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 // where the CPU has AVX2 (a feature test: "arch=..." clones test the CPU
 // model and miss newer ones), runs 8 wide. The sums are the same bit for
 // bit: for windows up to 15 x 15 (default 11) every product and partial sum
-// is an integer below 2^24, which float holds exactly, so neither the order
-// of the additions nor fused multiply-adds change them. Only this loop is
-// cloned: the score formula after it must round the same way everywhere.
+// is an integer below 2^24, which float holds exactly, so the order of the
+// additions cannot change them (larger windows may differ in the last bit
+// between CPUs). Only this loop is cloned: the score formula after it must
+// round the same way everywhere.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define LVF_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
