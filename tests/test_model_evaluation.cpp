@@ -203,3 +203,51 @@ TEST(ModelEvaluation, UntexturedSurfacesAreNotJudged)
 	EXPECT_LT(boxInconsistent, 0.02);
 	EXPECT_LT(wallInconsistent, 0.01);
 }
+
+TEST(ModelEvaluation, GridEvaluationJudgesItsPixelsLikeTheWholeImage)
+{
+	// The floating box scene: the grid evaluation must reproduce the whole
+	// image's judgement at its pixels (only rounding differs: integral
+	// images in double against float box filters) and still flag the box.
+	const Scene s = evaluate(lvf::test::roomWorld("  - {pose: [2.0, 0.2, 0], size: [0.5, 0.6, 0.4], elevation: 0.5}\n"));
+	const int half = 5, stride = 3;
+	const ModelEvaluation grid = ModelEvaluator().evaluateGrid(
+		s.left, s.right, s.eval.modelDisparity, s.stereo.geometry(), half, stride);
+	cv::Mat1b wrong, right;
+	truthMasks(s, wrong, right);
+	size_t onGrid = 0, sameState = 0, wrongOnGrid = 0, wrongFlagged = 0, offGridEvaluated = 0;
+	double worstNcc = 0, worstStd = 0;
+	for (int v = 0; v < s.left.rows; v++)
+		for (int u = 0; u < s.left.cols; u++)
+		{
+			const bool gridPixel = v >= half && u >= half && v < s.left.rows - half &&
+				u < s.left.cols - half && (v - half) % stride == 0 && (u - half) % stride == 0;
+			const auto st = static_cast<PixelState>(grid.state(v, u));
+			if (!gridPixel)
+			{
+				offGridEvaluated += st != PixelState::NotEvaluated;
+				continue;
+			}
+			onGrid++;
+			sameState += grid.state(v, u) == s.eval.state(v, u);
+			worstStd = std::max(worstStd, double(std::abs(grid.leftStd(v, u) - s.eval.leftStd(v, u))));
+			if (st != PixelState::Unverifiable && st != PixelState::Untextured)
+				worstNcc = std::max(worstNcc, double(std::abs(grid.ncc(v, u) - s.eval.ncc(v, u))));
+			if (wrong(v, u) && st != PixelState::Unverifiable && st != PixelState::Untextured)
+			{
+				wrongOnGrid++;
+				wrongFlagged += st == PixelState::Inconsistent;
+			}
+		}
+	std::cout << onGrid << " grid pixels, " << onGrid - sameState << " judged differently; worst NCC difference "
+			  << worstNcc << ", worst std difference " << worstStd << " grey levels; "
+			  << wrongFlagged << " of " << wrongOnGrid << " model-wrong grid pixels flagged\n";
+	EXPECT_EQ(offGridEvaluated, 0u);
+	EXPECT_EQ(grid.count(PixelState::NotEvaluated), size_t(s.left.total()) - onGrid);
+	EXPECT_GT(onGrid, 30000u);
+	EXPECT_GE(double(sameState) / double(onGrid), 0.999);
+	EXPECT_LT(worstNcc, 1e-3);
+	EXPECT_LT(worstStd, 1e-2);
+	EXPECT_GT(wrongOnGrid, 300u);
+	EXPECT_GT(double(wrongFlagged) / double(wrongOnGrid), 0.93);
+}

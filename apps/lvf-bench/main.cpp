@@ -7,7 +7,8 @@
 //   Fusion      the box room's frames through CLaserStereoFusion, against
 //               OpenCV's StereoSGBM (3-way) and StereoBM over the whole image
 //               with a disparity range covering [z_min, z_max], each turned
-//               into the same fused scan; time per frame, and recall /
+//               into the same fused scan; time per frame, the median time
+//               per frame of each stage of each method, and recall /
 //               phantom rate / range error of each against the truth scans.
 //   VFH         one VFH+ cycle on the default window of a 10 cm grid, and
 //               CHolonomicVFH against MRPT's CHolonomicVFF / CHolonomicND on
@@ -22,6 +23,9 @@
 #include <lvfusion/simulation/GroundTruth.h>
 #include <lvfusion/simulation/WorldLoader.h>
 
+#include "StageMedians.h"
+
+#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -104,14 +108,29 @@ struct FusionFixture
 		return f;
 	}
 
-	/** Fused scan of frame k by dense matching. */
-	mrpt::obs::CObservation2DRangeScan::Ptr dense(size_t k, lvf::depth::DenseMatcher m) const
+	/** Fused scan of frame k by dense matching; with `times`, the time of
+	 * its two stages (matching, disparity -> fused scan) recorded as `name`. */
+	mrpt::obs::CObservation2DRangeScan::Ptr dense(
+		size_t k, lvf::depth::DenseMatcher m, lvf::bench::StageMedians* times = nullptr,
+		const std::string& name = {}) const
 	{
+		using Clock = std::chrono::steady_clock;
+		auto ms = [](Clock::time_point a, Clock::time_point b) {
+			return std::chrono::duration<double, std::milli>(b - a).count();
+		};
+		const auto t0 = Clock::now();
 		const auto d = lvf::depth::denseDisparity(left[k], right[k], geometry, options.depth.zMin, m);
+		const auto t1 = Clock::now();
 		const auto points = lvf::depth::disparityToPoints(
 			d, geometry, options.band, options.depth.zMin, options.depth.zMax, options.depth.pixelStride);
 		const lvf::fusion::ScanFusion fusion(options.fusion);
-		return lvf::fusion::ScanFusion::fuse(*frames[k].scan, fusion.visualRanges(*frames[k].scan, points));
+		auto fused = lvf::fusion::ScanFusion::fuse(*frames[k].scan, fusion.visualRanges(*frames[k].scan, points));
+		if (times)
+		{
+			times->add(name, "matching", ms(t0, t1));
+			times->add(name, "to_scan", ms(t1, Clock::now()));
+		}
+		return fused;
 	}
 };
 
@@ -141,6 +160,45 @@ BENCHMARK(BM_Fusion_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_SGBM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
+const char* kFusionName = "fusion (this paper)";
+const char* kSgbmName = "StereoSGBM 3-way";
+const char* kBmName = "StereoBM";
+
+/** Median time per frame of every stage of every method, over `passes`
+ * passes through the box room's frames (each method in turn per frame, so
+ * that a busy spell of the machine hits them alike). */
+void printStageMedians(int passes)
+{
+	auto& f = FusionFixture::get();
+	// The fusion as configured, and with the model evaluated over the whole
+	// image (the paper's way), which the faster grid evaluation replaces.
+	auto wholeImage = f.options;
+	wholeImage.evaluateSearchGridOnly = false;
+	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
+		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage}};
+	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
+	for (const auto& v : variants) fusions.emplace_back(v.second);
+	lvf::bench::StageMedians medians;
+	for (int pass = 0; pass < passes; pass++)
+		for (size_t k = 0; k < f.frames.size(); k++)
+		{
+			const auto& frame = f.frames[k];
+			for (size_t i = 0; i < fusions.size(); i++)
+			{
+				const auto t = fusions[i].process(*frame.scan, *frame.stereo, "frame").times;
+				for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model},
+						 {"rectify", t.rectify}, {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
+					medians.add(variants[i].first, stage, ms);
+			}
+			f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName);
+			f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName);
+		}
+	std::cout << "\nMedian time per frame and stage [ms] on the box room (" << passes << " x "
+			  << f.frames.size() << " frames, " << f.left.front().cols << "x" << f.left.front().rows
+			  << ", one thread):\n";
+	medians.print(std::cout, kSgbmName);
+}
+
 /** Recall / phantom rate / range error of each method over all frames. */
 void printAccuracy()
 {
@@ -155,9 +213,9 @@ void printAccuracy()
 		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) {
 			return lvf::metrics::scoreFusedScan(*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax);
 		};
-		scores["fusion (this paper)"].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame").fused));
-		scores["StereoSGBM 3-way"].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
-		scores["StereoBM"].add(score(*f.dense(k, lvf::depth::DenseMatcher::Block)));
+		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame").fused));
+		scores[kSgbmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
+		scores[kBmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::Block)));
 		scores["laser alone"].add(score(*frame.scan));
 	}
 	std::cout << "\nAccuracy on the box room (" << f.frames.size()
@@ -226,6 +284,7 @@ int main(int argc, char** argv)
 	if (const auto full = reporter.m_msPerIteration.find("BM_VfhCycle_GridWindow_Full");
 		full != reporter.m_msPerIteration.end())
 		std::cout << "  ... with every cell of the window occupied: " << full->second << " ms\n";
+	printStageMedians(3);
 	printAccuracy();
 	benchmark::Shutdown();
 	return 0;

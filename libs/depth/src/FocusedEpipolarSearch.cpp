@@ -108,7 +108,7 @@ bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 }
 
 bool FocusedEpipolarSearch::findsItsWayBack(
-	EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightVariance, int u, int v,
+	EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightStd, int u, int v,
 	int x, int xNear, int xFar) const
 {
 	// Disparity d pairs left column u' with right column x when
@@ -116,7 +116,7 @@ bool FocusedEpipolarSearch::findsItsWayBack(
 	// columns [xNear, xFar], are d = u + cxOffset - [xNear, xFar]; from x they
 	// reach the left columns u + x - [xFar, xNear].
 	const int lo = u + x - xFar, hi = u + x - xNear;
-	back.reset(x, v, rightMean(v, x), std::sqrt(std::max(rightVariance(v, x), 1e-6f)));
+	back.reset(x, v, rightMean(v, x), std::max(rightStd(v, x), 1e-3f));
 	back.compute(lo, hi);
 	int bestU = -1;
 	float best = -2.f;
@@ -134,18 +134,22 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
 	const cv::Size window(windowSize, windowSize);
-	cv::Mat1f L, R, meanR, meanRR, rightVariance;
+	cv::Mat1f L, R, meanR, meanRR, rightStd;
 	left.convertTo(L, CV_32F);
 	right.convertTo(R, CV_32F);
 	cv::blur(R, meanR, window);
 	cv::blur(R.mul(R), meanRR, window);
-	rightVariance = meanRR - meanR.mul(meanR);
-	EpipolarScores scores(L, R, meanR, rightVariance, half);
+	// Rounding can leave a flat window's variance just below 0.
+	cv::sqrt(cv::max(meanRR - meanR.mul(meanR), 0.0), rightStd);
+	EpipolarScores scores(L, R, meanR, rightStd, half);
 	// The same scoring the other way round, for the left-right check: a right
-	// window against the left windows of its row.
-	cv::Mat1f leftVariance;
-	cv::multiply(evaluation.leftStd, evaluation.leftStd, leftVariance);
-	EpipolarScores backScores(R, L, evaluation.leftMean, leftVariance, half);
+	// window against the left windows of its row. Their statistics are the
+	// whole image's (the evaluation may have judged only the search grid).
+	cv::Mat1f meanL, meanLL, leftStd;
+	cv::blur(L, meanL, window);
+	cv::blur(L.mul(L), meanLL, window);
+	cv::sqrt(cv::max(meanLL - meanL.mul(meanL), 0.0), leftStd);
+	EpipolarScores backScores(R, L, meanL, leftStd, half);
 
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
@@ -233,7 +237,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			// can match a wrong place well; matched back from there, the right
 			// window then prefers its own true partner over this pixel.
 			if (m_options.leftRightCheck &&
-				!findsItsWayBack(backScores, meanR, rightVariance, u, v, bestX,
+				!findsItsWayBack(backScores, meanR, rightStd, u, v, bestX,
 								 static_cast<int>(std::ceil(column(fB / m_options.zMin))),
 								 static_cast<int>(std::floor(column(fB / (2 * m_options.zMax))))))
 			{

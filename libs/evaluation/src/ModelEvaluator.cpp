@@ -3,6 +3,9 @@
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <opencv2/imgproc.hpp>
 
+#include <numeric>
+#include <stdexcept>
+
 namespace lvf::evaluation
 {
 using lvf::common::writeOption;
@@ -28,6 +31,40 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "window std below this: untextured, not judged [grey levels]");
 }
 
+namespace
+{
+/** The right image resampled where the model sends each left pixel (same
+ * row, `modelDisparity` to the left), and the pixels where that cannot be
+ * done (no model surface, or the match leaves the right image).
+ * Whole-image operations throughout (OpenCV vectorises them). */
+void warpByModel(
+	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
+	cv::Mat1f& warped, cv::Mat1b& unverifiable)
+{
+	const cv::Size size = right.size();
+	cv::Mat1f columns(1, size.width), rows(size.height, 1);
+	for (int u = 0; u < size.width; u++) columns(0, u) = static_cast<float>(u);
+	for (int v = 0; v < size.height; v++) rows(v, 0) = static_cast<float>(v);
+	cv::Mat1f mapX, mapY;
+	cv::repeat(columns, size.height, 1, mapX);
+	cv::repeat(rows, 1, size.width, mapY);
+	mapX = mapX - modelDisparity + static_cast<float>(geometry.cxOffset);
+	unverifiable = (modelDisparity <= 0) | (mapX < 0) | (mapX > size.width - 1);
+	cv::Mat1f rightF;
+	right.convertTo(rightF, CV_32F);  // interpolate without rounding to 8 bits
+	cv::remap(rightF, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+}
+
+/** Sum over the (2 half + 1)^2 window centred on (v, u) of an integral image. */
+template <typename T>
+double windowSum(const cv::Mat_<T>& integral, int v, int u, int half)
+{
+	const int v0 = v - half, v1 = v + half + 1, u0 = u - half, u1 = u + half + 1;
+	return double(integral(v1, u1)) - double(integral(v0, u1)) - double(integral(v1, u0)) +
+		double(integral(v0, u0));
+}
+}  // namespace
+
 ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const
@@ -37,20 +74,9 @@ ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
 
-	// Where the model sends each left pixel in the right image (same row),
-	// whole-image operations throughout (OpenCV vectorises them).
-	cv::Mat1f columns(1, size.width), rows(size.height, 1);
-	for (int u = 0; u < size.width; u++) columns(0, u) = static_cast<float>(u);
-	for (int v = 0; v < size.height; v++) rows(v, 0) = static_cast<float>(v);
-	cv::Mat1f mapX, mapY;
-	cv::repeat(columns, size.height, 1, mapX);
-	cv::repeat(rows, 1, size.width, mapY);
-	mapX = mapX - modelDisparity + static_cast<float>(geometry.cxOffset);
-	const cv::Mat1b unmodelled = modelDisparity <= 0;
-	cv::Mat1b unverifiable = unmodelled | (mapX < 0) | (mapX > size.width - 1);
-	cv::Mat1f rightF, warped;
-	right.convertTo(rightF, CV_32F);  // interpolate without rounding to 8 bits
-	cv::remap(rightF, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+	cv::Mat1f warped;
+	cv::Mat1b unverifiable;
+	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
 	// A window touching an unverifiable pixel mixes in meaningless values.
 	cv::dilate(unverifiable, unverifiable, cv::Mat::ones(window, CV_8U));
 
@@ -79,9 +105,67 @@ ModelEvaluation ModelEvaluator::evaluate(
 	out.state.setTo(static_cast<uint8_t>(PixelState::Inconsistent), out.ncc < m_options.nccThreshold);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Untextured), varL < minVar);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Unverifiable), unverifiable);
-	out.state.setTo(static_cast<uint8_t>(PixelState::Unmodelled), unmodelled & (varL >= minVar));
+	out.state.setTo(static_cast<uint8_t>(PixelState::Unmodelled), (modelDisparity <= 0) & (varL >= minVar));
 	for (size_t k = 0; k < out.counts.size(); k++)
 		out.counts[k] = static_cast<size_t>(cv::countNonZero(out.state == static_cast<uint8_t>(k)));
+	return out;
+}
+
+ModelEvaluation ModelEvaluator::evaluateGrid(
+	const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
+	const RectifiedGeometry& geometry, int first, int stride) const
+{
+	const int half = m_options.windowSize / 2;
+	if (first < half || stride < 1)
+		throw std::invalid_argument("evaluateGrid: the grid must start at window_size / 2 or later");
+	ModelEvaluation out;
+	out.modelDisparity = modelDisparity;
+	const cv::Size size = left.size();
+	cv::Mat1f warped;
+	cv::Mat1b unverifiable;
+	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
+
+	// Window sums from integral images: a grid of one pixel in `stride`^2
+	// needs too few windows for whole-image box filters to pay. Doubles,
+	// because sums of squares over a 640x480 image overflow float's 24 bits.
+	cv::Mat1f L;
+	left.convertTo(L, CV_32F);
+	cv::Mat1d sumL, sumLL, sumW, sumWW, sumLW;
+	cv::Mat1i sumBad;
+	cv::integral(L, sumL, sumLL, CV_64F, CV_64F);
+	cv::integral(warped, sumW, sumWW, CV_64F, CV_64F);
+	cv::integral(L.mul(warped), sumLW, CV_64F);
+	cv::integral(unverifiable, sumBad, CV_32S);
+
+	out.ncc = cv::Mat1f::zeros(size);
+	out.leftMean = cv::Mat1f::zeros(size);
+	out.leftStd = cv::Mat1f::zeros(size);
+	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::NotEvaluated));
+	const double area = double(m_options.windowSize * m_options.windowSize);
+	const double minVar = m_options.minTextureStd * m_options.minTextureStd;
+	for (int v = first; v < size.height - half; v += stride)
+		for (int u = first; u < size.width - half; u += stride)
+		{
+			// The same rules, in the same order, as evaluate().
+			const double meanL = windowSum(sumL, v, u, half) / area;
+			const double meanW = windowSum(sumW, v, u, half) / area;
+			const double varL = std::max(windowSum(sumLL, v, u, half) / area - meanL * meanL, 0.0);
+			const double varW = std::max(windowSum(sumWW, v, u, half) / area - meanW * meanW, 0.0);
+			const double ncc = varW < minVar
+				? 0.0
+				: (windowSum(sumLW, v, u, half) / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
+			out.leftMean(v, u) = static_cast<float>(meanL);
+			out.leftStd(v, u) = static_cast<float>(std::sqrt(varL));
+			out.ncc(v, u) = static_cast<float>(ncc);
+			PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
+			if (varL < minVar) s = PixelState::Untextured;
+			if (windowSum(sumBad, v, u, half) > 0) s = PixelState::Unverifiable;
+			if (modelDisparity(v, u) <= 0 && varL >= minVar) s = PixelState::Unmodelled;
+			out.state(v, u) = static_cast<uint8_t>(s);
+			out.counts[static_cast<size_t>(s)]++;
+		}
+	out.counts[static_cast<size_t>(PixelState::NotEvaluated)] =
+		size.area() - std::accumulate(out.counts.begin(), out.counts.end(), size_t{0});
 	return out;
 }
 
@@ -96,7 +180,7 @@ cv::Mat3b drawEvaluationOverlay(const cv::Mat1b& left, const ModelEvaluation& e)
 			cv::Vec3b& p = out(v, u);
 			if (s == PixelState::Inconsistent) p = cv::Vec3b(p[0] / 3, p[1] / 3, 128 + p[2] / 2);
 			else if (s == PixelState::Unmodelled) p = cv::Vec3b(128 + p[0] / 2, p[1] / 3, 128 + p[2] / 2);
-			else if (s != PixelState::Consistent) p = cv::Vec3b(96 + p[0] / 2, p[1] * 2 / 3, p[2] * 2 / 3);
+			else if (s != PixelState::Consistent && s != PixelState::NotEvaluated) p = cv::Vec3b(96 + p[0] / 2, p[1] * 2 / 3, p[2] * 2 / 3);
 		}
 	return out;
 }

@@ -2,12 +2,14 @@
 // NCC of one left-image window against the right-image windows along its
 // epipolar line (the same row of the rectified pair), computed on demand and
 // cached, so that the search, the peak test and the verifications never score
-// a column twice. Window means and variances come from box filters; only the
+// a column twice. Window means and deviations come from box filters; only the
 // cross term is summed per column. Written by hand because OpenCV's
 // matchTemplate (TM_CCOEFF_NORMED) costs 3-4x more here: its per-call set-up
 // dominates for one 11x11 window against a strip of a few dozen columns.
 
 #include <opencv2/core.hpp>
+
+#include <cmath>
 
 #include <vector>
 
@@ -16,17 +18,25 @@ namespace lvf::depth
 class EpipolarScores
 {
    public:
-	/** All images float; means and variances over the (2 half + 1)^2 window. */
+	/** All images float; means and standard deviations over the
+	 * (2 half + 1)^2 window (per frame, so that no score takes a root). */
 	EpipolarScores(
 		const cv::Mat1f& left, const cv::Mat1f& right, const cv::Mat1f& rightMean,
-		const cv::Mat1f& rightVariance, int half);
+		const cv::Mat1f& rightStd, int half);
 
 	/** Starts a new left pixel, whose window has this mean and std. */
 	void reset(int u, int v, float leftMean, float leftStd);
 	/** Scores right columns [x0, x1], clipped to where a window fits. */
 	void compute(int x0, int x1);
-	/** Score of column x (computed on demand); -2 outside the image. */
-	float at(int x);
+	/** Score of column x (computed on demand); -2 outside the image.
+	 * Inline: the search's peak and uniqueness tests call it for every
+	 * column they look at, mostly for scores already there. */
+	float at(int x)
+	{
+		if (x < firstColumn() || x > lastColumn()) return -2.f;
+		if (std::isnan(m_scores[static_cast<size_t>(x)])) compute(x, x);
+		return m_scores[static_cast<size_t>(x)];
+	}
 
 	int firstColumn() const { return m_half; }
 	int lastColumn() const { return m_right.cols - 1 - m_half; }
@@ -36,7 +46,7 @@ class EpipolarScores
 	const cv::Mat1f& m_left;
 	const cv::Mat1f& m_right;
 	const cv::Mat1f& m_rightMean;
-	const cv::Mat1f& m_rightVariance;
+	const cv::Mat1f& m_rightStd;
 	int m_half, m_u = 0, m_v = 0;
 	float m_leftMean = 0, m_leftStd = 1;
 	std::vector<float> m_scores;  // NaN: not computed yet

@@ -111,7 +111,7 @@ class FocusedEpipolarSearch
 	 * left windows of row v over the disparities of right columns
 	 * [xNear, xFar] as seen from u, scores best at u (+-1). */
 	bool findsItsWayBack(
-		EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightVariance, int u,
+		EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightStd, int u,
 		int v, int x, int xNear, int xFar) const;
 
 	TOptions m_options;

@@ -7,6 +7,10 @@
 // square window, says where it is not. The five window sums NCC needs are box
 // filters over the whole image, so the cost per pixel does not depend on the
 // window size. Windows without texture cannot be judged and are gated out.
+//
+// The focused search (stage 4) reads the evaluation only on its pixel grid;
+// evaluateGrid() judges just those pixels, from integral images (four
+// look-ups per window sum), at a fraction of the whole image's cost.
 
 #include <lvfusion/evaluation/RectifiedStereo.h>
 #include <mrpt/config/CLoadableOptions.h>
@@ -24,7 +28,8 @@ enum class PixelState : uint8_t
 	/** Textured, but the model has no surface along the ray (no laser
 	 * segment in that direction): nothing to compare, and nothing known to
 	 * be there -- stage 4 searches it like an inconsistent pixel. */
-	Unmodelled = 4
+	Unmodelled = 4,
+	NotEvaluated = 5  //!< off the grid of evaluateGrid()
 };
 
 struct ModelEvaluation
@@ -33,7 +38,7 @@ struct ModelEvaluation
 	cv::Mat1f ncc;	//!< left vs model-warped right, in [-1, 1]
 	cv::Mat1b state;  //!< PixelState per pixel
 	cv::Mat1f leftMean, leftStd;  //!< window statistics of the left image
-	std::array<size_t, 5> counts{};	 //!< pixels per PixelState
+	std::array<size_t, 6> counts{};	 //!< pixels per PixelState
 
 	size_t count(PixelState s) const { return counts[static_cast<size_t>(s)]; }
 };
@@ -65,6 +70,14 @@ class ModelEvaluator
 		const cv::Mat1b& left, const cv::Mat1b& right,
 		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const;
 
+	/** The same judgement, only at pixels (first + i stride, first + j
+	 * stride) whose window lies inside the image (first >= windowSize / 2
+	 * for all of them); every other pixel is NotEvaluated, and the window
+	 * statistics and NCC are 0 there. */
+	ModelEvaluation evaluateGrid(
+		const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
+		const RectifiedGeometry& geometry, int first, int stride) const;
+
 	const TOptions& options() const { return m_options; }
 
    private:
@@ -72,7 +85,8 @@ class ModelEvaluator
 };
 
 /** The left image with inconsistent pixels tinted red and pixels that could
- * not be judged (untextured, unverifiable) tinted blue (cf. paper Fig. 3c). */
+ * not be judged (untextured, unverifiable) tinted blue (cf. paper Fig. 3c);
+ * pixels not evaluated are left as they are. */
 cv::Mat3b drawEvaluationOverlay(const cv::Mat1b& left, const ModelEvaluation& evaluation);
 
 }  // namespace lvf::evaluation

@@ -44,6 +44,11 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		double maxInconsistentFraction = 0.95;
 		/** Sampled floor pixels needed to judge the floor at all. */
 		static constexpr size_t kMinJudgedFloorPixels = 100;
+		/** Evaluate the model only at the pixels the depth search reads
+		 * (its pixel_stride grid): the same judgement there, several times
+		 * cheaper; the evaluation overlay then shows only those pixels, and
+		 * the fraction above is taken over them. */
+		bool evaluateSearchGridOnly = true;
 		lvf::lines::ScanLineExtractor::TOptions lines;
 		lvf::evaluation::ModelEvaluator::TOptions evaluation;
 		lvf::depth::FocusedEpipolarSearch::TOptions depth;
