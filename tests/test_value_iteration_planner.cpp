@@ -68,7 +68,7 @@ TEST(ValueIterationPlanner, EmptyRoomPathIsTheStraightLineUpToTheGrid)
 {
 	const auto g = emptyRoom();
 	const ValueIterationPlanner planner;
-	const TraversableGrid grid(g, planner.options().robotRadius, planner.options().freeThreshold);
+	const TraversableGrid grid(g, planner.options().robotRadius, planner.options().obstacleBelow);
 	const TPoint2D start{1.02, 1.13}, goal{8.71, 6.04};
 	const auto r = planner.plan(grid, start, goal);
 	ASSERT_TRUE(r.found()) << describe(r.outcome);
@@ -91,7 +91,7 @@ TEST(ValueIterationPlanner, WallWithGapPathGoesThroughTheGap)
 {
 	const auto g = wallWithGap(7.0, 8.0);
 	const ValueIterationPlanner planner;
-	const TraversableGrid grid(g, planner.options().robotRadius, planner.options().freeThreshold);
+	const TraversableGrid grid(g, planner.options().robotRadius, planner.options().obstacleBelow);
 	const TPoint2D start{2, 2}, goal{8, 2};
 	const auto r = planner.plan(grid, start, goal);
 	ASSERT_TRUE(r.found()) << describe(r.outcome);
@@ -144,9 +144,13 @@ TEST(ValueIterationPlanner, BadStartsAndGoalsAreReported)
 	EXPECT_EQ(planner.plan(g, {5, 2}, {8, 2}).outcome, PlanOutcome::StartBlocked);	// in the wall
 	EXPECT_EQ(planner.plan(g, {2, 2}, {5.35, 2}).outcome, PlanOutcome::GoalBlocked);  // within the radius
 	EXPECT_TRUE(planner.plan(g, {2, 2}, {5.5, 2}).found());	 // just clear of it
-	// Unobserved cells (0.5) are obstacles with the default threshold.
+	// Unobserved cells (0.5) are traversable with the default threshold,
+	// obstacles with one above 0.5.
 	COccupancyGridMap2D unknown(0, 10, 0, 10, kRes);
-	EXPECT_EQ(planner.plan(unknown, {2, 2}, {8, 2}).outcome, PlanOutcome::StartBlocked);
+	EXPECT_TRUE(planner.plan(unknown, {2, 2}, {8, 2}).found());
+	ValueIterationPlanner::TOptions strict;
+	strict.obstacleBelow = 0.51;
+	EXPECT_EQ(ValueIterationPlanner(strict).plan(unknown, {2, 2}, {8, 2}).outcome, PlanOutcome::StartBlocked);
 }
 
 TEST(ValueIterationPlanner, ValueFunctionIsTheBellmanFixedPoint)
@@ -211,7 +215,7 @@ TEST(ValueIterationPlanner, AgreesWithMrptPlannerSimple2D)
 	const double radius = planner.options().robotRadius;
 	for (const auto& c : cases)
 	{
-		const TraversableGrid grid(c.map, radius, planner.options().freeThreshold);
+		const TraversableGrid grid(c.map, radius, planner.options().obstacleBelow);
 		const auto ours = planner.plan(grid, c.start, c.goal);
 		bool mrptFound = false;
 		const auto theirs = planSimple2D(c.map, c.start, c.goal, radius, mrptFound);

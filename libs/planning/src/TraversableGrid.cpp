@@ -7,14 +7,14 @@
 namespace lvf::planning
 {
 TraversableGrid::TraversableGrid(
-	const mrpt::maps::COccupancyGridMap2D& grid, double robotRadius, double freeThreshold)
+	const mrpt::maps::COccupancyGridMap2D& grid, double robotRadius, double obstacleBelow)
 	: m_xMin(grid.getXMin()), m_yMin(grid.getYMin()), m_resolution(grid.getResolution())
 {
 	const int cols = static_cast<int>(grid.getSizeX()), rows = static_cast<int>(grid.getSizeY());
 	cv::Mat1b free(rows, cols);
 	for (int y = 0; y < rows; y++)
 		for (int x = 0; x < cols; x++)
-			free(y, x) = grid.getCell(x, y) > freeThreshold ? 255 : 0;
+			free(y, x) = grid.getCell(x, y) >= obstacleBelow ? 255 : 0;
 	// OpenCV's exact Euclidean distance transform: distance of every free
 	// cell's centre to the nearest obstacle cell's centre, in cells.
 	cv::distanceTransform(free, m_clearance, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);

@@ -13,7 +13,7 @@ void ValueIterationPlanner::TOptions::loadFromConfigFile(
 {
 	lvf::common::IniSection ini(source, section);
 	robotRadius = ini.real("robot_radius", robotRadius, 0, 10);
-	freeThreshold = ini.real("free_threshold", freeThreshold, 0, 1);
+	obstacleBelow = ini.real("obstacle_below", obstacleBelow, 0, 1);
 	maxSweeps = ini.integer("max_sweeps", maxSweeps, 1);
 	tolerance = ini.real("tolerance", tolerance, 0, 1);
 	ini.rejectUnknownKeys();
@@ -23,7 +23,7 @@ void ValueIterationPlanner::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	writeOption(c, s, "robot_radius", robotRadius, "obstacles are grown by this [m]");
-	writeOption(c, s, "free_threshold", freeThreshold, "cells not freer than this are obstacles (0.5: unknown too) [probability]");
+	writeOption(c, s, "obstacle_below", obstacleBelow, "cells less likely free than this are obstacles (0.5: unobserved cells are not) [probability]");
 	writeOption(c, s, "max_sweeps", maxSweeps, "safety bound on value-iteration sweeps [count]");
 	writeOption(c, s, "tolerance", tolerance, "converged when no cost-to-go changes by more [m]");
 }
@@ -36,8 +36,8 @@ std::string describe(PlanOutcome outcome)
 		case PlanOutcome::Unreachable: return "no collision-free path joins start and goal";
 		case PlanOutcome::StartOutsideMap: return "the start is outside the map";
 		case PlanOutcome::GoalOutsideMap: return "the goal is outside the map";
-		case PlanOutcome::StartBlocked: return "the start is inside an obstacle (grown by the robot radius) or unmapped";
-		case PlanOutcome::GoalBlocked: return "the goal is inside an obstacle (grown by the robot radius) or unmapped";
+		case PlanOutcome::StartBlocked: return "the start is inside an obstacle (grown by the robot radius)";
+		case PlanOutcome::GoalBlocked: return "the goal is inside an obstacle (grown by the robot radius)";
 	}
 	return "?";
 }
@@ -46,7 +46,7 @@ ValueIterationPlanner::Result ValueIterationPlanner::plan(
 	const mrpt::maps::COccupancyGridMap2D& map, const mrpt::math::TPoint2D& start,
 	const mrpt::math::TPoint2D& goal) const
 {
-	return plan(TraversableGrid(map, m_options.robotRadius, m_options.freeThreshold), start, goal);
+	return plan(TraversableGrid(map, m_options.robotRadius, m_options.obstacleBelow), start, goal);
 }
 
 ValueIterationPlanner::Result ValueIterationPlanner::plan(

@@ -4,9 +4,9 @@
 //
 // MRPT's COccupancyGridMap2D stores per cell the probability that it is FREE
 // (1 = free, 0 = occupied, 0.5 = never observed). A cell is an obstacle when
-// that value is not above `freeThreshold`, so with the default 0.5 cells no
-// sensor has seen are obstacles too: the planner never routes through the
-// unknown (as MRPT's PlannerSimple2D does with its default threshold).
+// that value is below `obstacleBelow`: with 0.5, a cell more likely occupied
+// than free. Unobserved cells (0.5) are then traversable; a threshold above
+// 0.5 makes them obstacles too.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/math/TPoint2D.h>
@@ -23,8 +23,8 @@ struct GridCell
 class TraversableGrid
 {
    public:
-	/** @param robotRadius [m] @param freeThreshold see above */
-	TraversableGrid(const mrpt::maps::COccupancyGridMap2D& grid, double robotRadius, double freeThreshold);
+	/** @param robotRadius [m] @param obstacleBelow see above */
+	TraversableGrid(const mrpt::maps::COccupancyGridMap2D& grid, double robotRadius, double obstacleBelow);
 
 	/** 1 where the robot's centre may be, 0 where its disc would overlap an
 	 * obstacle cell; rows = MRPT's cy, columns = cx. */

@@ -19,7 +19,7 @@ enum class PlanOutcome
 	Unreachable,  //!< no traversable path links start and goal
 	StartOutsideMap,
 	GoalOutsideMap,
-	StartBlocked,  //!< the robot's disc at the start overlaps an obstacle (or the unknown)
+	StartBlocked,  //!< the robot's disc at the start overlaps an obstacle
 	GoalBlocked
 };
 
@@ -33,9 +33,11 @@ class ValueIterationPlanner
 	struct TOptions : public mrpt::config::CLoadableOptions
 	{
 		double robotRadius = 0.30;	//!< obstacles are grown by this [m]
-		/** Cells whose MRPT value (probability of being free) is not above
-		 * this are obstacles; 0.5 makes unobserved cells obstacles. */
-		double freeThreshold = 0.5;
+		/** Cells whose MRPT value (probability of being free) is below this
+		 * are obstacles. 0.5: cells more likely occupied than free; cells
+		 * never observed (0.5) are not, or the robot could not even stand
+		 * where its own 180-degree laser never looked (behind it). */
+		double obstacleBelow = 0.5;
 		int maxSweeps = 100000;	 //!< safety bound on value-iteration sweeps
 		double tolerance = 0;  //!< converged when no value changes by more [m]
 
