@@ -190,11 +190,16 @@ int run(int argc, char** argv)
 		const auto o = p.plan.outcome;
 		// A start or goal the user gave must be usable; the run's own first
 		// and last poses may not be (then the summary says why there is no path).
-		if (!start || !goal) continue;
-		if (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked)
-			throw InputError(ends.startSource, "start", describe(o) + " of the " + p.name + " map");
-		if (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked)
-			throw InputError(ends.goalSource, "goal", describe(o) + " of the " + p.name + " map");
+		auto where = [&](const TPoint2D& q, bool outside) {
+			return mrpt::format("(%.2f, %.2f) ", q.x, q.y) +
+				(outside ? "is outside the " + p.name + " map"
+						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
+										p.name.c_str(), config.planner.robotRadius));
+		};
+		if (start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
+			throw InputError(ends.startSource, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
+		if (goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
+			throw InputError(ends.goalSource, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
 	}
 
 	// Outputs, staged until everything worked.
@@ -205,6 +210,9 @@ int run(int argc, char** argv)
 	std::vector<cv::Mat3b> panels;
 	for (const auto& p : plans)
 	{
+		std::ofstream pathFile(files.stage(name + "_" + p.name + "_path.txt"));
+		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
+		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
 		lvf::apps::saveGrid(*p.grid, files.stage(name + "_" + p.name + "_map.gridmap.gz"));
 		mrpt::img::CImage plain;
 		p.grid->getAsImage(plain);	// north up
@@ -295,7 +303,7 @@ int run(int argc, char** argv)
 		std::cout << "\n";
 	}
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
-			  << "}_map.{gridmap.gz,png}, " << name << "_paths.png, " << name << "_plans.csv"
+			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
 	return lvf::common::kExitOk;
 }
