@@ -79,6 +79,37 @@ lvf::metrics::TrajectoryError localisationError(const fs::path& poses, const fs:
 		lvf::metrics::readPoseFile(poses.string()), lvf::metrics::readPoseFile(truth.string()));
 }
 
+/** The particles' mean pf-localization logs after every step. */
+std::vector<mrpt::poses::CPose2D> pfLocalizationEstimates(const std::string& log)
+{
+	std::vector<mrpt::poses::CPose2D> poses;
+	const std::regex estimate(R"(PDF estimation: \(([-0-9.]+),([-0-9.]+),([-0-9.]+)deg\))");
+	for (std::sregex_iterator it(log.begin(), log.end(), estimate), end; it != end; ++it)
+		poses.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]), mrpt::DEG2RAD(std::stod((*it)[3])));
+	return poses;
+}
+
+struct Agreement
+{
+	double medianPosition = 0, maxPosition = 0, medianHeading = 0;	// [m], [m], [rad]
+};
+
+/** Step-by-step difference of two trajectories from step `from` on. */
+Agreement compareSteps(
+	const std::vector<lvf::metrics::StampedPose>& ours, const std::vector<mrpt::poses::CPose2D>& theirs, size_t from)
+{
+	std::vector<double> position, heading;
+	for (size_t k = from; k < ours.size() && k < theirs.size(); k++)
+	{
+		position.push_back(std::hypot(ours[k].pose.x() - theirs[k].x(), ours[k].pose.y() - theirs[k].y()));
+		heading.push_back(std::abs(mrpt::math::wrapToPi(ours[k].pose.phi() - theirs[k].phi())));
+	}
+	std::sort(position.begin(), position.end());
+	std::sort(heading.begin(), heading.end());
+	if (position.empty()) return {NAN, NAN, NAN};
+	return {position[position.size() / 2], position.back(), heading[heading.size() / 2]};
+}
+
 class LvfMap : public CliTest
 {
 };
@@ -198,34 +229,64 @@ TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
 	const auto ours = run(kMap, "--input " + rawlog + " --config demo.ini --outdir out -q");
 	ASSERT_EQ(ours.status, 0) << ours.err;
 
-	// pf-localization logs the particles' mean after every step.
-	std::vector<mrpt::poses::CPose2D> reference;
-	const std::regex estimate(R"(PDF estimation: \(([-0-9.]+),([-0-9.]+),([-0-9.]+)deg\))");
-	const std::string log = theirs.out + theirs.err;
-	for (std::sregex_iterator it(log.begin(), log.end(), estimate), end; it != end; ++it)
-		reference.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]), mrpt::DEG2RAD(std::stod((*it)[3])));
+	const auto reference = pfLocalizationEstimates(theirs.out + theirs.err);
 	const auto poses = lvf::metrics::readPoseFile((m_dir / "out/localization_demo_poses.txt").string());
 	ASSERT_EQ(reference.size(), poses.size());
 
 	// Both start from the same uniform spread over 20 m x 10 m (global
 	// localisation) with different random numbers: compare once converged.
 	const size_t converged = 10;
-	std::vector<double> position, heading;
-	for (size_t k = converged; k < poses.size(); k++)
-	{
-		position.push_back(std::hypot(poses[k].pose.x() - reference[k].x(), poses[k].pose.y() - reference[k].y()));
-		heading.push_back(std::abs(mrpt::math::wrapToPi(poses[k].pose.phi() - reference[k].phi())));
-	}
-	std::sort(position.begin(), position.end());
-	std::sort(heading.begin(), heading.end());
-	const double medianPos = position[position.size() / 2], maxPos = position.back();
-	const double medianHeading = heading[heading.size() / 2];
+	const auto a = compareSteps(poses, reference, converged);
 	std::printf("against pf-localization, steps %zu..%zu: median %.3f m (max %.3f m), heading %.2f deg\n",
-				converged, poses.size() - 1, medianPos, maxPos, mrpt::RAD2DEG(medianHeading));
-	::testing::Test::RecordProperty("median_position_difference_m", std::to_string(medianPos));
-	EXPECT_LT(medianPos, 0.10);
-	EXPECT_LT(maxPos, 0.50);
-	EXPECT_LT(medianHeading, mrpt::DEG2RAD(2.0));
+				converged, poses.size() - 1, a.medianPosition, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
+	::testing::Test::RecordProperty("median_position_difference_m", std::to_string(a.medianPosition));
+	EXPECT_LT(a.medianPosition, 0.10);
+	EXPECT_LT(a.maxPosition, 0.50);
+	EXPECT_LT(a.medianHeading, mrpt::DEG2RAD(2.0));
+}
+
+TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnARealLaserLog)
+{
+	const std::string pfLocalization = LVF_PF_LOCALIZATION;
+	const std::string log = std::string(LVF_SHARED_DATA_DIR) + "/laser/mit-csail.rawlog";
+	if (pfLocalization.empty() || !fs::exists(log))
+		GTEST_SKIP() << "needs MRPT's pf-localization and ../shared/data/laser/mit-csail.rawlog";
+	// Its first 300 scans (30 s); no prior map: lvf-map builds one by ICP-SLAM.
+	ASSERT_EQ(run(LVF_RAWLOG_EDIT, "--cut --from-index 0 --to-index 599 -i " + log + " -o cut.rawlog").status, 0);
+	const auto first = run(kMap, "--input cut.rawlog --outdir own -q");
+	ASSERT_EQ(first.status, 0) << first.err;
+	const auto start = lvf::metrics::readPoseFile((m_dir / "own/cut_poses.txt").string()).front().pose;
+
+	// The same map, settings and initial box for both: lvf-map's defaults,
+	// localising within 0.2 m and 5 degrees of where the run starts.
+	std::string ini = run(kMap, "--input x --dump-config").out;
+	auto set = [&](const std::string& key, const std::string& value) {
+		ini = std::regex_replace(ini, std::regex("\n" + key + " =[^\n]*"), "\n" + key + " = " + value);
+	};
+	set("map_file", "own/cut_prior_map.gridmap.gz\nrawlog_file = cut.rawlog\nlogOutput_dir = pfl\n"
+					"3DSceneFrequency = -1\nSHOW_PROGRESS_3D_REAL_TIME = false");
+	set("init_PDF_min_x", std::to_string(start.x() - 0.2));
+	set("init_PDF_max_x", std::to_string(start.x() + 0.2));
+	set("init_PDF_min_y", std::to_string(start.y() - 0.2));
+	set("init_PDF_max_y", std::to_string(start.y() + 0.2));
+	set("init_PDF_min_yaw_deg", std::to_string(mrpt::RAD2DEG(start.phi()) - 5));
+	set("init_PDF_max_yaw_deg", std::to_string(mrpt::RAD2DEG(start.phi()) + 5));
+	write("real.ini", ini);
+
+	const auto theirs = run(pfLocalization, "real.ini");
+	ASSERT_EQ(theirs.status, 0) << theirs.err;
+	const auto ours = run(kMap, "--input cut.rawlog --map own/cut_prior_map.gridmap.gz --config real.ini --outdir out -q");
+	ASSERT_EQ(ours.status, 0) << ours.err;
+	const auto reference = pfLocalizationEstimates(theirs.out + theirs.err);
+	const auto poses = lvf::metrics::readPoseFile((m_dir / "out/cut_poses.txt").string());
+	ASSERT_EQ(reference.size(), 300u);
+	ASSERT_EQ(poses.size(), 300u);
+	const auto a = compareSteps(poses, reference, 0);
+	std::printf("mit-csail (300 scans) against pf-localization: median %.3f m (max %.3f m), heading %.2f deg\n",
+				a.medianPosition, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
+	EXPECT_LT(a.medianPosition, 0.05);
+	EXPECT_LT(a.maxPosition, 0.50);
+	EXPECT_LT(a.medianHeading, mrpt::DEG2RAD(1.0));
 }
 
 TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)

@@ -20,7 +20,14 @@ void GlobalGrids::add(
 	const mrpt::obs::CObservation2DRangeScan& laser, const mrpt::obs::CObservation2DRangeScan* fused,
 	const mrpt::poses::CPose2D& pose)
 {
-	// The grids grow as the scans reach beyond them.
+	// The grids start around the first pose and grow as the scans reach
+	// beyond them (odometry frames may be far from the origin).
+	if (m_laserScans == 0)
+		for (auto* g : {&m_laser, &m_fused})
+			g->setSize(
+				static_cast<float>(pose.x() - 1), static_cast<float>(pose.x() + 1), static_cast<float>(pose.y() - 1),
+				static_cast<float>(pose.y() + 1), static_cast<float>(m_resolution));
+	m_laserScans++;
 	const mrpt::poses::CPose3D robot(pose);
 	m_laser.insertObservation(laser, robot);
 	if (fused)

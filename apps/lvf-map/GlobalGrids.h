@@ -39,7 +39,7 @@ class GlobalGrids
 
    private:
 	mrpt::maps::COccupancyGridMap2D m_laser, m_fused;
-	size_t m_fusedScans = 0, m_visualCells = 0;
+	size_t m_laserScans = 0, m_fusedScans = 0, m_visualCells = 0;
 	double m_resolution;
 	int m_visualMinHits;
 	std::map<std::pair<int, int>, int> m_visualHits;	 // world cell -> bearings ending there
