@@ -111,6 +111,19 @@ void BM_ValueIteration_500x500(benchmark::State& state)
 	}
 }
 
+void BM_ValueIteration_500x500_GrownGridGiven(benchmark::State& state)
+{
+	const lvf::planning::ValueIterationPlanner planner;
+	const lvf::planning::TraversableGrid grid(
+		clutteredGrid500(), planner.options().robotRadius, planner.options().obstacleBelow);
+	for (auto _ : state)
+	{
+		const auto r = planner.plan(grid, kPlanStart, kPlanGoal);
+		if (!r.found()) state.SkipWithError("no path");
+		benchmark::DoNotOptimize(r.path.data());
+	}
+}
+
 void BM_PlannerSimple2D_500x500(benchmark::State& state)
 {
 	mrpt::nav::PlannerSimple2D planner;
@@ -128,6 +141,7 @@ void BM_PlannerSimple2D_500x500(benchmark::State& state)
 }
 
 BENCHMARK(BM_ValueIteration_500x500)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_ValueIteration_500x500_GrownGridGiven)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_PlannerSimple2D_500x500)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 /** The box room's frames, simulated once, with what every method needs. */

@@ -23,44 +23,45 @@ const char* kExperiment = "LocalizationExperiment";
 // with MRPT's key names (see MRPT's localization_demo.ini). Tuned for a
 // tracked (not global) localisation on a 5 cm grid with a 10 m laser.
 const char* kDefaultPfSections = R"ini([KLD_options]
-KLD_binSize_PHI_deg = 2
-KLD_binSize_XY = 0.02
-KLD_delta = 0.01
-KLD_epsilon = 0.01
-KLD_maxSampleSize = 5000
-KLD_minSampleSize = 300
-KLD_minSamplesPerBin = 0
+KLD_binSize_PHI_deg = 2             // KLD histogram bin, heading [deg]
+KLD_binSize_XY = 0.02               // KLD histogram bin, position [m]
+KLD_delta = 0.01                    // KLD bound: probability of exceeding epsilon [0..1]
+KLD_epsilon = 0.01                  // KLD bound on the sampling error [0..1]
+KLD_maxSampleSize = 5000            // most particles [count]
+KLD_minSampleSize = 300             // fewest particles [count]
+KLD_minSamplesPerBin = 0            // particles at least per occupied bin [count]
 
 [PF_options]
-PF_algorithm = 0
-resamplingMethod = 0
-adaptiveSampleSize = 1
-pfAuxFilterOptimal_MaximumSearchSamples = 10
-BETA = 0.5
-sampleSize = 1
+PF_algorithm = 0                    // 0 standard proposal, 1 auxiliary PF, 2 optimal, 3 auxiliary optimal
+resamplingMethod = 0                // 0 multinomial, 1 residual, 2 stratified, 3 systematic
+adaptiveSampleSize = 1              // 1: KLD-adaptive number of particles
+pfAuxFilterOptimal_MaximumSearchSamples = 10  // PF_algorithm 3 only [count]
+BETA = 0.5                          // resample when the effective sample size falls below this [0..1]
+sampleSize = 1                      // unused here (particles_count below), as in pf-localization
 
 [DummyOdometryParams]
-minStdXY = 0.02
-minStdPHI = 1.0
+minStdXY = 0.02                     // odometry noise floor, observation-only rawlogs [m]
+minStdPHI = 1.0                     // odometry heading noise floor, observation-only rawlogs [deg]
 
 [LocalizationExperiment]
+; map_file: the prior map (--map overrides it), relative to this file's folder
 map_file =
-particles_count = 2000
-init_PDF_mode = 1
-init_PDF_min_x = -0.2
-init_PDF_max_x = 0.2
-init_PDF_min_y = -0.2
-init_PDF_max_y = 0.2
-init_PDF_min_yaw_deg = -5
-init_PDF_max_yaw_deg = 5
+particles_count = 2000              // initial particles [count]
+init_PDF_mode = 1                   // 1: uniform over the box below, 0: over its free grid cells
+init_PDF_min_x = -0.2               // initial box [m]
+init_PDF_max_x = 0.2                // [m]
+init_PDF_min_y = -0.2               // [m]
+init_PDF_max_y = 0.2                // [m]
+init_PDF_min_yaw_deg = -5           // [deg]
+init_PDF_max_yaw_deg = 5            // [deg]
 
 [MetricMap]
-occupancyGrid_count = 1
+occupancyGrid_count = 1             // the prior map's occupancy grid [count]
 gasGrid_count = 0
 landmarksMap_count = 0
 pointsMap_count = 0
 beaconMap_count = 0
-likelihoodMapSelection = -1
+likelihoodMapSelection = -1         // -1: all maps score the scans
 enableInsertion_pointsMap = 1
 enableInsertion_landmarksMap = 1
 enableInsertion_gridMaps = 1
@@ -68,26 +69,26 @@ enableInsertion_gasGridMaps = 1
 enableInsertion_beaconMap = 1
 
 [MetricMap_occupancyGrid_00_creationOpts]
-resolution = 0.05
+resolution = 0.05                   // prior grid cell size (a .simplemap is rendered at it) [m]
 
 [MetricMap_occupancyGrid_00_insertOpts]
-mapAltitude = 0
+mapAltitude = 0                     // [m]
 useMapAltitude = 0
-maxDistanceInsertion = 15
-maxOccupancyUpdateCertainty = 0.55
+maxDistanceInsertion = 15           // scan points farther are not inserted [m]
+maxOccupancyUpdateCertainty = 0.55  // evidence per scan [0.5..1]
 considerInvalidRangesAsFreeSpace = 1
-minLaserScanNoiseStd = 0.001
+minLaserScanNoiseStd = 0.001        // [m]
 
 [MetricMap_occupancyGrid_00_likelihoodOpts]
-likelihoodMethod = 4
-LF_decimation = 5
-LF_stdHit = 0.05
-LF_maxCorrsDistance = 0.30
-LF_zHit = 0.95
-LF_zRandom = 0.05
-LF_maxRange = 80
+likelihoodMethod = 4                // 4: likelihood field (truncated); see MRPT's COccupancyGridMap2D
+LF_decimation = 5                   // score every Nth ray [count]
+LF_stdHit = 0.05                    // likelihood field: range noise [m]
+LF_maxCorrsDistance = 0.30          // likelihood field: farthest correspondence [m]
+LF_zHit = 0.95                      // weight of a hit [0..1]
+LF_zRandom = 0.05                   // weight of a random reading [0..1]
+LF_maxRange = 80                    // rays longer are not scored [m]
 LF_alternateAverageMethod = 0
-MI_exponent = 10
+MI_exponent = 10                    // (other likelihood methods, unused with 4)
 MI_skip_rays = 10
 MI_ratio_max_distance = 2
 rayTracing_useDistanceFilter = 0
@@ -136,7 +137,9 @@ void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CC
 			const bool ignored = section == kExperiment && kIgnoredExperimentKeys.count(key);
 			if (!ignored && std::find(defaults.begin(), defaults.end(), key) == defaults.end())
 				throw InputError(source, "[" + section + "] " + key, "unknown key");
-			merged.write(section, key, user.read_string(section, key, ""));
+			// Only changed values are rewritten: the others keep their comments.
+			const std::string value = user.read_string(section, key, "");
+			if (value != merged.read_string(section, key, "")) merged.write(section, key, value);
 		}
 	}
 }
