@@ -9,28 +9,24 @@
 
 #include "GlobalGrids.h"
 #include "LocalizationConfig.h"
+#include "MapPlans.h"
 #include "MapRun.h"
 #include "ParticleLocalizer.h"
 #include "PriorMap.h"
+#include "RunReport.h"
 
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
-#include <lvfusion/metrics/ObstacleGridScore.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
-#include <lvfusion/planning/PathMetrics.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <regex>
@@ -57,35 +53,10 @@ TPoint2D parsePoint(const std::string& text, const std::string& option)
 	throw InputError(option, "", "expected x,y in metres, got '" + text + "'");
 }
 
-/** Start and goal, and which input named them (for error messages). */
-struct Endpoints
+/** Which input named the start and the goal (for error messages). */
+struct EndpointSources
 {
-	TPoint2D start, goal;
-	std::string startSource, goalSource;
-};
-
-/** A file lvf-simulate writes beside NAME.rawlog, if it is there (also for
- * lvf-fuse's NAME_fused.rawlog written into the same folder). */
-std::optional<std::string> besideInput(const std::string& input, const std::string& suffix)
-{
-	std::string stem = fs::path(input).stem().string();
-	for (int attempt = 0; attempt < 2; attempt++)
-	{
-		const fs::path p = fs::path(input).parent_path() / (stem + suffix);
-		if (fs::exists(p)) return p.string();
-		const std::string fused = "_fused";
-		if (stem.size() <= fused.size() || stem.compare(stem.size() - fused.size(), fused.size(), fused)) break;
-		stem.resize(stem.size() - fused.size());
-	}
-	return std::nullopt;
-}
-
-struct PlanOnMap
-{
-	std::string name;  //!< laser / fused
-	const mrpt::maps::COccupancyGridMap2D* grid;
-	lvf::planning::ValueIterationPlanner::Result plan;
-	cv::Scalar colour;
+	std::string start, goal;
 };
 
 int run(int argc, char** argv)
@@ -120,17 +91,18 @@ int run(int argc, char** argv)
 
 	// Where the plan starts and ends, checked before any work.
 	std::optional<TPoint2D> start, goal;
-	Endpoints ends;
+	lvf::apps::Endpoints ends;
+	EndpointSources sources;
 	if (!argWorld.getValue().empty())
 	{
 		const auto world = lvf::simulation::loadWorldFile(argWorld.getValue());
 		start = TPoint2D(world.path.front().x, world.path.front().y);
-		ends.startSource = ends.goalSource = argWorld.getValue();
+		sources.start = sources.goal = argWorld.getValue();
 		if (!world.target) throw InputError(argWorld.getValue(), "target", "the world has no target to plan to");
 		goal = *world.target;
 	}
-	if (!argStart.getValue().empty()) start = parsePoint(argStart.getValue(), "--start"), ends.startSource = "--start";
-	if (!argGoal.getValue().empty()) goal = parsePoint(argGoal.getValue(), "--goal"), ends.goalSource = "--goal";
+	if (!argStart.getValue().empty()) start = parsePoint(argStart.getValue(), "--start"), sources.start = "--start";
+	if (!argGoal.getValue().empty()) goal = parsePoint(argGoal.getValue(), "--goal"), sources.goal = "--goal";
 
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 
@@ -178,10 +150,8 @@ int run(int argc, char** argv)
 	// 3. Plan on each grid.
 	ends.start = start.value_or(TPoint2D(poses.front().pose.x(), poses.front().pose.y()));
 	ends.goal = goal.value_or(TPoint2D(poses.back().pose.x(), poses.back().pose.y()));
-	if (ends.startSource.empty()) ends.startSource = "the first localised pose";
-	if (ends.goalSource.empty()) ends.goalSource = "the last localised pose";
 	const lvf::planning::ValueIterationPlanner planner(config.planner);
-	std::vector<PlanOnMap> plans{{"laser", &grids.laser(), {}, {0, 0, 255}}};
+	std::vector<lvf::apps::MapPlan> plans{{"laser", &grids.laser(), {}, {0, 0, 255}}};
 	if (grids.fusedScans()) plans.push_back({"fused", &grids.fused(), {}, {0, 160, 0}});
 	for (auto& p : plans)
 	{
@@ -197,28 +167,14 @@ int run(int argc, char** argv)
 										p.name.c_str(), config.planner.robotRadius));
 		};
 		if (start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
-			throw InputError(ends.startSource, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
+			throw InputError(sources.start, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
 		if (goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
-			throw InputError(ends.goalSource, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
+			throw InputError(sources.goal, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
 	}
 
 	// Outputs, staged until everything worked.
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());
 	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
-	std::vector<lvf::apps::DrawnPath> drawn;
-	for (const auto& p : plans) drawn.push_back({p.plan.path, p.colour});
-	std::vector<cv::Mat3b> panels;
-	for (const auto& p : plans)
-	{
-		std::ofstream pathFile(files.stage(name + "_" + p.name + "_path.txt"));
-		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
-		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
-		lvf::apps::saveGrid(*p.grid, files.stage(name + "_" + p.name + "_map.gridmap.gz"));
-		mrpt::img::CImage plain;
-		p.grid->getAsImage(plain);	// north up
-		plain.saveToFile(files.stage(name + "_" + p.name + "_map.png"));
-		panels.push_back(lvf::apps::drawPathsOnGrid(*p.grid, drawn, ends.start, ends.goal));
-	}
 	if (ownMap)
 	{
 		auto grid = prior->mapByClass<mrpt::maps::COccupancyGridMap2D>();
@@ -228,28 +184,7 @@ int run(int argc, char** argv)
 			grid->saveAsBitmapFile(files.stage(name + "_prior_map.png"));
 		}
 	}
-	{
-		// Fig. 14c-d: laser-only map | fused map, both paths on each.
-		int rows = 0;
-		for (const auto& p : panels) rows = std::max(rows, p.rows);
-		for (auto& p : panels)
-			cv::copyMakeBorder(p, p, 0, rows - p.rows, 0, 10, cv::BORDER_CONSTANT, cv::Scalar::all(255));
-		cv::Mat sideBySide;
-		cv::hconcat(panels, sideBySide);
-		cv::imwrite(files.stage(name + "_paths.png"), sideBySide);
-	}
-	std::ofstream csv(files.stage(name + "_plans.csv"));
-	csv << "map,outcome,length_m,min_clearance_m,sweeps,start_x,start_y,goal_x,goal_y\n";
-	for (const auto& p : plans)
-	{
-		const lvf::planning::TraversableGrid own(*p.grid, config.planner.robotRadius, config.planner.obstacleBelow);
-		csv << mrpt::format(
-			"%s,%s,%.3f,%.3f,%zu,%.3f,%.3f,%.3f,%.3f\n", p.name.c_str(),
-			p.plan.found() ? "found" : "unreachable", lvf::planning::pathLength(p.plan.path),
-			p.plan.found() ? lvf::planning::minimumClearance(p.plan.path, own) : 0.0, p.plan.sweeps,
-			ends.start.x, ends.start.y, ends.goal.x, ends.goal.y);
-	}
-	csv.close();
+	lvf::apps::writeMapPlans(files, name, plans, ends, config.planner);
 	files.commit();
 
 	if (quiet) return lvf::common::kExitOk;
@@ -260,48 +195,7 @@ int run(int argc, char** argv)
 		localizer.particles(), priorText.c_str());
 	if (!runLog.fusedScans)
 		std::cout << "  no FUSED scans in the input (run lvf-fuse first for the fused map): laser-only map only\n";
-	// Ground truth beside a simulated run: how good the estimate and maps are.
-	if (const auto gtPath = besideInput(input, "_gt_poses.txt"))
-	{
-		const auto e = lvf::metrics::compareTrajectories(poses, lvf::metrics::readPoseFile(*gtPath));
-		std::cout << mrpt::format(
-			"  localisation against %s (%zu poses): median error %.3f m, %.2f deg (max %.3f m)\n",
-			gtPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
-	}
-	std::optional<lvf::planning::TraversableGrid> truthGrid;
-	if (const auto obstaclesPath = besideInput(input, "_obstacles.gridmap.gz"))
-	{
-		mrpt::maps::COccupancyGridMap2D truth;
-		mrpt::io::CFileGZInputStream in(*obstaclesPath);
-		mrpt::serialization::archiveFrom(in) >> truth;
-		truthGrid.emplace(truth, 0.0, 0.5);
-		for (const auto& p : plans)
-		{
-			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, truth);
-			std::cout << mrpt::format(
-				"  %s map against %s: recall %.3f of %zu observed obstacle cells, precision %.3f of %zu occupied\n",
-				p.name.c_str(), obstaclesPath->c_str(), s.recall(), s.truthObserved, s.precision(), s.mapOccupied);
-		}
-	}
-	for (const auto& p : plans)
-	{
-		std::cout << mrpt::format(
-			"  %s map, (%.2f, %.2f) -> (%.2f, %.2f): ", p.name.c_str(), ends.start.x, ends.start.y, ends.goal.x,
-			ends.goal.y);
-		if (!p.plan.found())
-		{
-			std::cout << describe(p.plan.outcome) << "\n";
-			continue;
-		}
-		std::cout << mrpt::format(
-			"path %.2f m (%zu value-iteration sweeps)", lvf::planning::pathLength(p.plan.path), p.plan.sweeps);
-		if (truthGrid)
-			std::cout << mrpt::format(
-				", %.2f m of it through true obstacles, clearance to them %.2f m",
-				lvf::planning::lengthThroughObstacles(p.plan.path, *truthGrid),
-				lvf::planning::minimumClearance(p.plan.path, *truthGrid));
-		std::cout << "\n";
-	}
+	lvf::apps::printRunReport(std::cout, input, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
