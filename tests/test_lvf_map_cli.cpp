@@ -17,6 +17,9 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -205,6 +208,43 @@ TEST_F(LvfMap, SeededRandomWorldsLocaliseWithinTargets)
 		EXPECT_LT(e.medianPosition, 0.05) << name;
 		EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0)) << name;
 	}
+}
+
+TEST_F(LvfMap, ImagePriorMapLocalisesWithinTargets)
+{
+	// A 6 m x 4 m room centred on the origin, and its floor plan drawn as
+	// an image at 5 cm per pixel (white free, black walls), as a user would
+	// give a scanned plan.
+	write("plan_room.yaml", R"(name: plan_room
+walls:
+  - {name: south, from: [-3, -2], to: [3, -2]}
+  - {name: north, from: [-3, 2], to: [3, 2]}
+  - {name: east, from: [3, -2], to: [3, 2]}
+  - {name: west, from: [-3, -2], to: [-3, 2]}
+path:
+  waypoints: [[-2, -0.5], [2, 0.5]]
+  step: 0.25
+)");
+	ASSERT_EQ(run(kSimulate, "--world plan_room.yaml --outdir . --format obs -q").status, 0);
+	// 6.2 m x 4.2 m; the walls' 0.1 m (two pixels) centred on the room's sides.
+	cv::Mat1b plan(84, 124, uchar(127));
+	plan(cv::Rect(1, 1, 122, 82)) = 0;
+	plan(cv::Rect(3, 3, 118, 78)) = 255;
+	cv::imwrite((m_dir / "plan.png").string(), plan);
+
+	// The robot is known to start near (-2, -0.5), heading about 14 deg.
+	write("start.ini", "[LocalizationExperiment]\ninit_PDF_min_x = -2.2\ninit_PDF_max_x = -1.8\n"
+					   "init_PDF_min_y = -0.7\ninit_PDF_max_y = -0.3\n"
+					   "init_PDF_min_yaw_deg = 9\ninit_PDF_max_yaw_deg = 19\n");
+	const auto r = run(kMap, "--input plan_room.rawlog --map plan.png --config start.ini --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("plan.png (image, 0.050 m per pixel, centred on the origin)"), std::string::npos) << r.out;
+	const auto e = localisationError(m_dir / "out/plan_room_poses.txt", m_dir / "plan_room_gt_poses.txt");
+	std::printf("image prior map: median error %.3f m, %.2f deg over %zu poses\n", e.medianPosition,
+				mrpt::RAD2DEG(e.medianHeading), e.matched);
+	EXPECT_EQ(e.matched, 18u);
+	EXPECT_LT(e.medianPosition, 0.05);
+	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
 }
 
 TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
