@@ -25,11 +25,12 @@
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
+#include <mrpt/system/string_utils.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <regex>
 
 using lvf::common::InputError;
 using mrpt::math::TPoint2D;
@@ -41,11 +42,16 @@ namespace fs = std::filesystem;
 
 TPoint2D parsePoint(const std::string& text, const std::string& option)
 {
-	static const std::regex xy(R"(\s*([-+0-9.eE]+)\s*,\s*([-+0-9.eE]+)\s*)");
-	std::smatch m;
+	const auto comma = text.find(',');
+	const auto number = [&](const std::string& part) {
+		size_t used = 0;
+		const double v = std::stod(part, &used);
+		if (mrpt::system::trim(part.substr(used)) != "" || !std::isfinite(v)) throw std::invalid_argument(part);
+		return v;
+	};
 	try
 	{
-		if (std::regex_match(text, m, xy)) return {std::stod(m[1]), std::stod(m[2])};
+		if (comma != std::string::npos) return {number(text.substr(0, comma)), number(text.substr(comma + 1))};
 	}
 	catch (const std::exception&)
 	{
