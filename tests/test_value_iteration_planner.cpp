@@ -4,8 +4,10 @@
 // point; and the same maps planned by MRPT's PlannerSimple2D.
 
 #include <gtest/gtest.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <lvfusion/planning/ValueIterationPlanner.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/nav/planners/PlannerSimple2D.h>
 #include <mrpt/random/RandomGenerators.h>
 
@@ -231,4 +233,37 @@ TEST(ValueIterationPlanner, AgreesWithMrptPlannerSimple2D)
 		EXPECT_NEAR(a, b, 0.05 * b) << c.name;
 		EXPECT_GE(ca, radius) << c.name;
 	}
+}
+
+TEST(ValueIterationPlanner, OptionsRoundTripAndBadKeysAreRefused)
+{
+	ValueIterationPlanner::TOptions changed;
+	changed.robotRadius = 0.42;
+	changed.obstacleBelow = 0.6;
+	changed.maxSweeps = 77;
+	changed.tolerance = 1e-4;
+	mrpt::config::CConfigFileMemory written;
+	changed.saveToConfigFile(written, "ValueIterationPlanner");
+	ValueIterationPlanner::TOptions read;
+	read.loadFromConfigFile(mrpt::config::CConfigFileMemory(written.getContent()), "ValueIterationPlanner");
+	EXPECT_DOUBLE_EQ(read.robotRadius, 0.42);
+	EXPECT_DOUBLE_EQ(read.obstacleBelow, 0.6);
+	EXPECT_EQ(read.maxSweeps, 77);
+	EXPECT_DOUBLE_EQ(read.tolerance, 1e-4);
+
+	auto error = [](const std::string& ini) -> std::string {
+		try
+		{
+			ValueIterationPlanner::TOptions o;
+			o.loadFromConfigFile(mrpt::config::CConfigFileMemory(ini), "ValueIterationPlanner");
+		}
+		catch (const lvf::common::InputError& e)
+		{
+			return e.what();
+		}
+		return "";
+	};
+	EXPECT_NE(error("[ValueIterationPlanner]\nrobot_raduis = 0.3\n").find("robot_raduis: unknown key"), std::string::npos);
+	EXPECT_NE(error("[ValueIterationPlanner]\nobstacle_below = 1.5\n").find("obstacle_below"), std::string::npos);
+	EXPECT_NE(error("[ValueIterationPlanner]\nmax_sweeps = 0\n").find("max_sweeps"), std::string::npos);
 }
