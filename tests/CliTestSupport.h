@@ -3,6 +3,7 @@
 // own empty working folder, and a run's exit status, stdout and stderr.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <filesystem>
@@ -37,7 +38,8 @@ class CliTest : public ::testing::Test
 	{
 		const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
 		m_dir = fs::temp_directory_path() /
-			("lvf_" + std::string(info->test_suite_name()) + "_" + info->name());
+			("lvf_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+			 std::to_string(::getpid()));  // two builds' suites may run at once
 		fs::remove_all(m_dir);
 		fs::create_directories(m_dir);
 	}

@@ -4,6 +4,7 @@
 #include "TestWorlds.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -76,7 +77,7 @@ TEST_P(RawlogRoundTrip, ObservationsReadBackUnchanged)
 	const auto frames = simulate(5, 3);
 	const std::string path =
 		(std::filesystem::temp_directory_path() /
-		 ("lvf_roundtrip_" + std::to_string(int(GetParam())) + ".rawlog"))
+		 ("lvf_roundtrip_" + std::to_string(int(GetParam())) + "_" + std::to_string(::getpid()) + ".rawlog"))
 			.string();
 	{
 		lvf::common::RawlogWriter writer(path, GetParam());

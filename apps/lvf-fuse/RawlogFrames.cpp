@@ -1,13 +1,10 @@
 #include "RawlogFrames.h"
 
-#include <lvfusion/common/InputError.h>
-#include <mrpt/io/CFileGZInputStream.h>
+#include <lvfusion/common/RawlogReader.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt/obs/CObservationOdometry.h>
-#include <mrpt/system/filesystem.h>
 
 #include <cmath>
 
@@ -26,30 +23,7 @@ struct Stamped
 RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff)
 {
 	RawlogFrames out;
-	if (!mrpt::system::fileExists(path))
-		throw lvf::common::InputError(path, "", "input rawlog not found");
-	// Read object by object (MRPT's CRawlog loader prints its own multi-line
-	// errors and keeps going), so a corrupt file is one clear line.
-	mrpt::io::CFileGZInputStream file(path);
-	auto archive = mrpt::serialization::archiveFrom(file);
-	for (;;)
-	{
-		try
-		{
-			out.entries.push_back(archive.ReadObject());
-		}
-		catch (const mrpt::serialization::CExceptionEOF&)
-		{
-			break;
-		}
-		catch (const std::exception&)
-		{
-			throw lvf::common::InputError(
-				path, "record " + std::to_string(out.entries.size()),
-				"not an MRPT object: corrupt, truncated or not a rawlog");
-		}
-	}
-	if (out.entries.empty()) throw lvf::common::InputError(path, "", "empty rawlog");
+	out.entries = lvf::common::readRawlogEntries(path);
 
 	std::vector<Stamped> scans, stereos;
 	std::vector<std::pair<double, mrpt::poses::CPose2D>> odometry;	// time, pose

@@ -1,0 +1,51 @@
+#include "MapPlans.h"
+
+#include "GlobalGrids.h"
+
+#include <lvfusion/planning/PathMetrics.h>
+#include <mrpt/core/format.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <fstream>
+
+namespace lvf::apps
+{
+void writeMapPlans(
+	lvf::common::StagedOutputFiles& files, const std::string& name, const std::vector<MapPlan>& plans,
+	const Endpoints& ends, const lvf::planning::ValueIterationPlanner::TOptions& planner)
+{
+	std::vector<DrawnPath> drawn;
+	for (const auto& p : plans) drawn.push_back({p.plan.path, p.colour});
+	std::vector<cv::Mat3b> panels;
+	std::ofstream csv(files.stage(name + "_plans.csv"));
+	csv << "map,outcome,length_m,min_clearance_m,sweeps,start_x,start_y,goal_x,goal_y\n";
+	for (const auto& p : plans)
+	{
+		const std::string base = name + "_" + p.name;
+		std::ofstream pathFile(files.stage(base + "_path.txt"));
+		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
+		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
+		saveGrid(*p.grid, files.stage(base + "_map.gridmap.gz"));
+		mrpt::img::CImage plain;
+		p.grid->getAsImage(plain);	// north up
+		plain.saveToFile(files.stage(base + "_map.png"));
+		panels.push_back(drawPathsOnGrid(*p.grid, drawn, ends.start, ends.goal));
+
+		const lvf::planning::TraversableGrid grown(*p.grid, planner.robotRadius, planner.obstacleBelow);
+		csv << mrpt::format(
+			"%s,%s,%.3f,%.3f,%zu,%.3f,%.3f,%.3f,%.3f\n", p.name.c_str(),
+			p.plan.found() ? "found" : "unreachable", lvf::planning::pathLength(p.plan.path),
+			p.plan.found() ? lvf::planning::minimumClearance(p.plan.path, grown) : 0.0, p.plan.sweeps,
+			ends.start.x, ends.start.y, ends.goal.x, ends.goal.y);
+	}
+	// Fig. 14c-d: laser-only map | fused map, both paths on each.
+	int rows = 0;
+	for (const auto& p : panels) rows = std::max(rows, p.rows);
+	for (auto& p : panels)
+		cv::copyMakeBorder(p, p, 0, rows - p.rows, 0, 10, cv::BORDER_CONSTANT, cv::Scalar::all(255));
+	cv::Mat sideBySide;
+	cv::hconcat(panels, sideBySide);
+	cv::imwrite(files.stage(name + "_paths.png"), sideBySide);
+}
+
+}  // namespace lvf::apps

@@ -1,0 +1,41 @@
+#include "ParticleLocalizer.h"
+
+#include <lvfusion/common/InputError.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+namespace lvf::apps
+{
+ParticleLocalizer::ParticleLocalizer(
+	const LocalizationConfig& config, const mrpt::maps::CMultiMetricMap::Ptr& map,
+	const mrpt::math::TPose2D& initMin, const mrpt::math::TPose2D& initMax, bool onFreeSpace)
+{
+	m_pdf.options = config.monteCarlo;
+	m_pdf.options.metricMap = map;
+	m_filter.m_options = config.pf;
+	if (onFreeSpace)
+	{
+		auto grid = map->mapByClass<mrpt::maps::COccupancyGridMap2D>();
+		if (!grid)
+			throw lvf::common::InputError(
+				"[LocalizationExperiment] init_PDF_mode", "", "0 (free cells) needs an occupancy grid in [MetricMap]");
+		// 0.7: pf-localization's threshold for "free" cells.
+		m_pdf.resetUniformFreeSpace(
+			grid.get(), 0.7f, static_cast<int>(config.particles), initMin.x, initMax.x, initMin.y, initMax.y,
+			initMin.phi, initMax.phi);
+	}
+	else
+		m_pdf.resetUniform(
+			initMin.x, initMax.x, initMin.y, initMax.y, initMin.phi, initMax.phi, static_cast<int>(config.particles));
+	m_filter.setVerbosityLevel(mrpt::system::LVL_ERROR);
+	m_pdf.setVerbosityLevel(mrpt::system::LVL_ERROR);
+}
+
+mrpt::poses::CPose2D ParticleLocalizer::update(const MapStep& step)
+{
+	m_filter.executeOn(m_pdf, step.action.get(), step.laserFrame.get());
+	mrpt::poses::CPose2D mean;
+	m_pdf.getMean(mean);
+	return mean;
+}
+
+}  // namespace lvf::apps

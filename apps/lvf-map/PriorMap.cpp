@@ -1,0 +1,96 @@
+#include "PriorMap.h"
+
+#include <lvfusion/common/InputError.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose3DPDF.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/slam/CMetricMapBuilderICP.h>
+#include <mrpt/system/filesystem.h>
+#include <mrpt/system/string_utils.h>
+
+#include <set>
+
+namespace lvf::apps
+{
+using lvf::common::InputError;
+
+namespace
+{
+mrpt::maps::COccupancyGridMap2D& gridOf(mrpt::maps::CMultiMetricMap& map, const std::string& path)
+{
+	auto grid = map.mapByClass<mrpt::maps::COccupancyGridMap2D>();
+	if (!grid)
+		throw InputError(path, "", "[MetricMap] of the configuration has no occupancy grid to load this map into");
+	return *grid;
+}
+
+template <typename T>
+void readSerialised(const std::string& path, T& object)
+{
+	try
+	{
+		mrpt::io::CFileGZInputStream in(path);
+		mrpt::serialization::archiveFrom(in) >> object;
+	}
+	catch (const std::exception&)
+	{
+		throw InputError(path, "", "not a readable MRPT " + std::string(object.GetRuntimeClass()->className));
+	}
+}
+}  // namespace
+
+std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::maps::CMultiMetricMap& map)
+{
+	if (!mrpt::system::fileExists(path)) throw InputError(path, "", "map file not found");
+	// Like pf-localization: the extension decides, a trailing .gz ignored.
+	const std::string ext = mrpt::system::lowerCase(mrpt::system::extractFileExtension(path, true));
+	static const std::set<std::string> images{"png", "jpg", "jpeg", "bmp", "pgm", "ppm", "tif", "tiff"};
+	if (ext == "simplemap")
+	{
+		mrpt::maps::CSimpleMap simple;
+		readSerialised(path, simple);
+		if (simple.empty()) throw InputError(path, "", "empty simple map");
+		map.loadFromProbabilisticPosesAndObservations(simple);
+		return mrpt::format("%s (simple map, %zu keyframes)", path.c_str(), simple.size());
+	}
+	auto& grid = gridOf(map, path);
+	if (ext == "gridmap")
+	{
+		readSerialised(path, grid);
+		return mrpt::format("%s (grid map, %ux%u cells of %.3f m)", path.c_str(), grid.getSizeX(), grid.getSizeY(), grid.getResolution());
+	}
+	if (images.count(ext))
+	{
+		if (!grid.loadFromBitmapFile(path, static_cast<float>(imageResolution)))
+			throw InputError(path, "", "not a readable image");
+		return mrpt::format("%s (image, %.3f m per pixel, centred on the origin)", path.c_str(), imageResolution);
+	}
+	throw InputError(
+		path, "", "unknown map format '." + ext +
+			"': expected .gridmap(.gz), .simplemap(.gz) or an image (.png, .jpg, .bmp, .pgm)");
+}
+
+mrpt::maps::CSimpleMap buildMapFromScans(const MapRun& run)
+{
+	mrpt::slam::CMetricMapBuilderICP icp;
+	icp.ICP_options.matchAgainstTheGrid = false;
+	icp.ICP_options.insertionLinDistance = 0.5;
+	icp.ICP_options.insertionAngDistance = mrpt::DEG2RAD(10.0);
+	mrpt::maps::TMetricMapInitializer::Ptr points(mrpt::maps::CSimplePointsMap::MapDefinition());
+	icp.ICP_options.mapInitializers.clear();
+	icp.ICP_options.mapInitializers.push_back(points);
+	icp.setVerbosityLevel(mrpt::system::LVL_ERROR);
+	icp.initialize();
+	for (const auto& step : run.steps) icp.processActionObservation(*step.action, *step.laserFrame);
+	mrpt::maps::CSimpleMap out;
+	icp.getCurrentlyBuiltMap(out);
+	// ICP-SLAM starts at the origin; move its keyframes to where odometry
+	// starts, so that the map is in the odometry frame.
+	const mrpt::poses::CPose3D origin(run.steps.front().odometry);
+	for (size_t i = 0; i < out.size(); i++) out.getAsPair(i).pose->changeCoordinatesReference(origin);
+	return out;
+}
+
+}  // namespace lvf::apps

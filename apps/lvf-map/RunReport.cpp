@@ -1,0 +1,82 @@
+#include "RunReport.h"
+
+#include <lvfusion/metrics/ObstacleGridScore.h>
+#include <lvfusion/planning/PathMetrics.h>
+#include <mrpt/core/format.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <optional>
+
+namespace lvf::apps
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+/** A file lvf-simulate writes beside NAME.rawlog, if it is there (also for
+ * lvf-fuse's NAME_fused.rawlog written into the same folder). */
+std::optional<std::string> besideInput(const std::string& input, const std::string& suffix)
+{
+	std::string stem = fs::path(input).stem().string();
+	const std::string fused = "_fused";
+	for (int attempt = 0; attempt < 2; attempt++)
+	{
+		const fs::path p = fs::path(input).parent_path() / (stem + suffix);
+		if (fs::exists(p)) return p.string();
+		if (stem.size() <= fused.size() || stem.compare(stem.size() - fused.size(), fused.size(), fused)) break;
+		stem.resize(stem.size() - fused.size());
+	}
+	return std::nullopt;
+}
+}  // namespace
+
+void printRunReport(
+	std::ostream& out, const std::string& input, const std::vector<lvf::metrics::StampedPose>& poses,
+	const std::vector<MapPlan>& plans, const Endpoints& ends)
+{
+	if (const auto gtPath = besideInput(input, "_gt_poses.txt"))
+	{
+		const auto e = lvf::metrics::compareTrajectories(poses, lvf::metrics::readPoseFile(*gtPath));
+		out << mrpt::format(
+			"  localisation against %s (%zu poses): median error %.3f m, %.2f deg (max %.3f m)\n",
+			gtPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
+	}
+	std::optional<lvf::planning::TraversableGrid> truthGrid;
+	if (const auto obstaclesPath = besideInput(input, "_obstacles.gridmap.gz"))
+	{
+		mrpt::maps::COccupancyGridMap2D truth;
+		mrpt::io::CFileGZInputStream in(*obstaclesPath);
+		mrpt::serialization::archiveFrom(in) >> truth;
+		truthGrid.emplace(truth, 0.0, 0.5);
+		for (const auto& p : plans)
+		{
+			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, truth);
+			out << mrpt::format(
+				"  %s map against %s: recall %.3f of %zu observed obstacle cells, precision %.3f of %zu occupied\n",
+				p.name.c_str(), obstaclesPath->c_str(), s.recall(), s.truthObserved, s.precision(), s.mapOccupied);
+		}
+	}
+	for (const auto& p : plans)
+	{
+		out << mrpt::format(
+			"  %s map, (%.2f, %.2f) -> (%.2f, %.2f): ", p.name.c_str(), ends.start.x, ends.start.y, ends.goal.x,
+			ends.goal.y);
+		if (!p.plan.found())
+		{
+			out << describe(p.plan.outcome) << "\n";
+			continue;
+		}
+		out << mrpt::format(
+			"path %.2f m (%zu value-iteration sweeps)", lvf::planning::pathLength(p.plan.path), p.plan.sweeps);
+		if (truthGrid)
+			out << mrpt::format(
+				", %.2f m of it through true obstacles, clearance to them %.2f m",
+				lvf::planning::lengthThroughObstacles(p.plan.path, *truthGrid),
+				lvf::planning::minimumClearance(p.plan.path, *truthGrid));
+		out << "\n";
+	}
+}
+
+}  // namespace lvf::apps

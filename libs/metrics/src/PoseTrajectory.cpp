@@ -1,0 +1,73 @@
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/metrics/PoseTrajectory.h>
+#include <mrpt/core/format.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace lvf::metrics
+{
+namespace
+{
+double median(std::vector<double> v)
+{
+	if (v.empty()) return NAN;
+	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+	return v[v.size() / 2];
+}
+}  // namespace
+
+std::vector<StampedPose> readPoseFile(const std::string& path)
+{
+	std::ifstream in(path);
+	if (!in) throw lvf::common::InputError(path, "", "pose file not found");
+	std::vector<StampedPose> poses;
+	std::string line;
+	for (size_t n = 1; std::getline(in, line); n++)
+	{
+		if (line.empty() || line[0] == '#' || line[0] == '%') continue;
+		std::istringstream fields(line);
+		StampedPose p;
+		double x, y, yaw;
+		if (!(fields >> p.frame >> p.timestamp >> x >> y >> yaw))
+			throw lvf::common::InputError(path, "line " + std::to_string(n), "expected: frame timestamp x y yaw");
+		p.pose = mrpt::poses::CPose2D(x, y, yaw);
+		poses.push_back(p);
+	}
+	return poses;
+}
+
+void writePoseFile(const std::string& path, const std::vector<StampedPose>& poses)
+{
+	std::ofstream out(path);
+	out << "# frame timestamp[s] x[m] y[m] yaw[rad]\n";
+	for (const auto& p : poses)
+		out << mrpt::format(
+			"%zu %.6f %.5f %.5f %.6f\n", p.frame, p.timestamp, p.pose.x(), p.pose.y(), p.pose.phi());
+}
+
+TrajectoryError compareTrajectories(
+	const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth)
+{
+	std::vector<double> position, heading;
+	for (const auto& e : estimate)
+	{
+		const auto t = std::find_if(truth.begin(), truth.end(), [&](const StampedPose& p) {
+			return std::abs(p.timestamp - e.timestamp) < 1e-4;
+		});
+		if (t == truth.end()) continue;
+		position.push_back(std::hypot(e.pose.x() - t->pose.x(), e.pose.y() - t->pose.y()));
+		heading.push_back(std::abs(mrpt::math::wrapToPi(e.pose.phi() - t->pose.phi())));
+	}
+	TrajectoryError err;
+	err.matched = position.size();
+	err.medianPosition = median(position);
+	err.medianHeading = median(heading);
+	err.maxPosition = position.empty() ? NAN : *std::max_element(position.begin(), position.end());
+	return err;
+}
+
+}  // namespace lvf::metrics

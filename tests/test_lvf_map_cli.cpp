@@ -1,0 +1,386 @@
+// lvf-map end to end, as a user runs it: simulated runs scored against the
+// simulator's truth (poses, band obstacles, the desk a laser-only plan drives
+// through), MRPT's own localisation demo against MRPT's pf-localization, and
+// bad input.
+
+#include "CliTestSupport.h"
+
+#include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/metrics/ObstacleGridScore.h>
+#include <lvfusion/metrics/PoseTrajectory.h>
+#include <lvfusion/planning/PathMetrics.h>
+#include <lvfusion/simulation/CStereoLaserSimulator.h>
+#include <lvfusion/simulation/RandomWorld.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace lvf::test;
+using lvf::planning::Path;
+
+namespace
+{
+const std::string kMap = LVF_MAP_BIN;
+const std::string kSimulate = LVF_SIMULATE_BIN;
+const std::string kFuse = LVF_FUSE_BIN;
+const std::string kMrptDatasets = "/usr/share/mrpt/datasets";
+
+mrpt::maps::COccupancyGridMap2D loadGrid(const fs::path& p)
+{
+	mrpt::maps::COccupancyGridMap2D g;
+	mrpt::io::CFileGZInputStream in(p.string());
+	mrpt::serialization::archiveFrom(in) >> g;
+	return g;
+}
+
+Path loadPath(const fs::path& p)
+{
+	Path path;
+	std::istringstream in(slurp(p));
+	for (std::string line; std::getline(in, line);)
+	{
+		if (line.empty() || line[0] == '#') continue;
+		std::istringstream xy(line);
+		mrpt::math::TPoint2D q;
+		xy >> q.x >> q.y;
+		path.push_back(q);
+	}
+	return path;
+}
+
+/** Fig. 12/14's situation, in a room small enough for the 8 m laser to
+ * see a wall ahead at every pose: a large desk (legs at its corners, top at
+ * 0.75 m) that the laser passes under. The robot drives up to it, round it
+ * and back; the plan asked for goes straight across it. */
+const char* kDeskOffice = R"(name: desk_office
+seed: 5
+walls:
+  - {name: south, from: [-1, -3], to: [7.5, -3]}
+  - {name: north, from: [-1, 3], to: [7.5, 3]}
+  - {name: east, from: [7.5, -3], to: [7.5, 3]}
+  - {name: west, from: [-1, -3], to: [-1, 3]}
+tables:
+  - {name: desk, pose: [3.5, 0.8, 0], size: [1.6, 1.6], height: 0.75}
+path:
+  waypoints: [[0, 0.8], [1.6, 0.8], [1.6, -1.8], [5.8, -1.8], [5.8, 2.3], [0.5, 2.3]]
+  step: 0.3
+target: [6.2, 0.8]
+)";
+
+/** Median position and heading error of NAME_poses.txt against the truth. */
+lvf::metrics::TrajectoryError localisationError(const fs::path& poses, const fs::path& truth)
+{
+	return lvf::metrics::compareTrajectories(
+		lvf::metrics::readPoseFile(poses.string()), lvf::metrics::readPoseFile(truth.string()));
+}
+
+/** The particles' mean pf-localization logs after every step. */
+std::vector<mrpt::poses::CPose2D> pfLocalizationEstimates(const std::string& log)
+{
+	std::vector<mrpt::poses::CPose2D> poses;
+	const std::regex estimate(R"(PDF estimation: \(([-0-9.]+),([-0-9.]+),([-0-9.]+)deg\))");
+	for (std::sregex_iterator it(log.begin(), log.end(), estimate), end; it != end; ++it)
+		poses.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]), mrpt::DEG2RAD(std::stod((*it)[3])));
+	return poses;
+}
+
+struct Agreement
+{
+	double medianPosition = 0, maxPosition = 0, medianHeading = 0;	// [m], [m], [rad]
+};
+
+/** Step-by-step difference of two trajectories from step `from` on. */
+Agreement compareSteps(
+	const std::vector<lvf::metrics::StampedPose>& ours, const std::vector<mrpt::poses::CPose2D>& theirs, size_t from)
+{
+	std::vector<double> position, heading;
+	for (size_t k = from; k < ours.size() && k < theirs.size(); k++)
+	{
+		position.push_back(std::hypot(ours[k].pose.x() - theirs[k].x(), ours[k].pose.y() - theirs[k].y()));
+		heading.push_back(std::abs(mrpt::math::wrapToPi(ours[k].pose.phi() - theirs[k].phi())));
+	}
+	std::sort(position.begin(), position.end());
+	std::sort(heading.begin(), heading.end());
+	if (position.empty()) return {NAN, NAN, NAN};
+	return {position[position.size() / 2], position.back(), heading[heading.size() / 2]};
+}
+
+class LvfMap : public CliTest
+{
+};
+}  // namespace
+
+TEST_F(LvfMap, DeskOfficeFusedMapShowsTheDeskAndItsPathAvoidsIt)
+{
+	write("desk_office.yaml", kDeskOffice);
+	ASSERT_EQ(run(kSimulate, "--world desk_office.yaml --outdir . --format obs -q").status, 0);
+	ASSERT_EQ(run(kFuse, "--input desk_office.rawlog --outdir . -q").status, 0);
+	const auto r = run(kMap, "--input desk_office_fused.rawlog --world desk_office.yaml --start 0.8,0.8 --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	std::cout << r.out;
+
+	// Localisation (prior map built from the run: odometry frame = world).
+	const auto e = localisationError(m_dir / "out/desk_office_fused_poses.txt", m_dir / "desk_office_gt_poses.txt");
+	EXPECT_EQ(e.matched, 59u);
+	EXPECT_LT(e.medianPosition, 0.05);
+	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
+
+	// Band obstacles: vision adds the desk the laser cannot see.
+	const auto truth = loadGrid(m_dir / "desk_office_obstacles.gridmap.gz");
+	const auto laser = lvf::metrics::scoreObstacleGrid(loadGrid(m_dir / "out/desk_office_fused_laser_map.gridmap.gz"), truth);
+	const auto fused = lvf::metrics::scoreObstacleGrid(loadGrid(m_dir / "out/desk_office_fused_fused_map.gridmap.gz"), truth);
+	std::printf("band obstacle cells: laser-only recall %.3f precision %.3f; fused recall %.3f precision %.3f\n",
+				laser.recall(), laser.precision(), fused.recall(), fused.precision());
+	EXPECT_GT(fused.recall(), laser.recall() + 0.05);
+	EXPECT_GT(fused.precision(), 0.9);
+	EXPECT_GE(fused.precision(), laser.precision() - 0.02);
+
+	// Fig. 14c-d: the laser-only plan crosses the desk, the fused one not.
+	const lvf::planning::TraversableGrid truthGrid(truth, 0.0, 0.5);
+	const Path laserPath = loadPath(m_dir / "out/desk_office_fused_laser_path.txt");
+	const Path fusedPath = loadPath(m_dir / "out/desk_office_fused_fused_path.txt");
+	ASSERT_FALSE(laserPath.empty());
+	ASSERT_FALSE(fusedPath.empty());
+	const double laserInside = lvf::planning::lengthThroughObstacles(laserPath, truthGrid);
+	const double fusedInside = lvf::planning::lengthThroughObstacles(fusedPath, truthGrid);
+	const double fusedClearance = lvf::planning::minimumClearance(fusedPath, truthGrid);
+	std::printf("through true obstacles: laser-only path %.2f m, fused path %.2f m (clearance %.3f m)\n",
+				laserInside, fusedInside, fusedClearance);
+	EXPECT_GT(laserInside, 1.0);  // the desk is 1.6 m deep
+	EXPECT_EQ(fusedInside, 0.0);
+	// The robot's disc (0.30 m) clears the true desk, up to a cell of map error.
+	EXPECT_GT(fusedClearance, 0.30 - 0.05);
+}
+
+TEST_F(LvfMap, CorridorDeskSampleLocalisesWithinTargets)
+{
+	// The shipped sample: actions/sensory-frames layout, whose odometry
+	// starts at the origin, where the corridor's path starts too.
+	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/corridor_desk.rawlog";
+	const auto r = run(kMap, "--input " + sample + " --outdir out -q");
+	ASSERT_EQ(r.status, 0) << r.err;
+	const auto e = localisationError(
+		m_dir / "out/corridor_desk_poses.txt", std::string(LVF_SAMPLES_DIR) + "/corridor_desk_gt_poses.txt");
+	std::printf("corridor_desk: median error %.3f m, %.2f deg over %zu poses\n", e.medianPosition,
+				mrpt::RAD2DEG(e.medianHeading), e.matched);
+	EXPECT_EQ(e.matched, 9u);
+	EXPECT_LT(e.medianPosition, 0.05);
+	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
+}
+
+TEST_F(LvfMap, SeededRandomWorldsLocaliseWithinTargets)
+{
+	// lvf-simulate's seeded rooms, with a longer drive than its two poses:
+	// 25 poses 0.2 m apart, the laser and odometry of the simulator written
+	// as an observations-only rawlog (odometry in the world frame).
+	for (const uint32_t seed : {3u, 8u})
+	{
+		lvf::simulation::RandomWorldOptions options;
+		options.pathPoses = 25;
+		lvf::simulation::CStereoLaserSimulator sim(
+			lvf::simulation::generateRandomWorld(seed, options), lvf::simulation::CStereoLaserSimulator::TOptions());
+		const std::string name = "room_" + std::to_string(seed);
+		std::vector<lvf::metrics::StampedPose> truth;
+		{
+			lvf::common::RawlogWriter out((m_dir / (name + ".rawlog")).string(), lvf::common::RawlogFormat::Observations);
+			for (size_t k = 0; k < sim.frameCount(); k++)
+			{
+				const auto f = sim.simulateNextFrame(false);
+				out.append({f.timestamp, f.odometry, {f.scan}});
+				truth.push_back({k, mrpt::Clock::toDouble(f.timestamp), f.truePose});
+			}
+		}
+		const auto r = run(kMap, "--input " + name + ".rawlog --outdir out -q");
+		ASSERT_EQ(r.status, 0) << r.err;
+		const auto e = lvf::metrics::compareTrajectories(
+			lvf::metrics::readPoseFile((m_dir / ("out/" + name + "_poses.txt")).string()), truth);
+		std::printf("%s: median error %.3f m, %.2f deg over %zu poses\n", name.c_str(), e.medianPosition,
+					mrpt::RAD2DEG(e.medianHeading), e.matched);
+		EXPECT_EQ(e.matched, 25u) << name;
+		EXPECT_LT(e.medianPosition, 0.05) << name;
+		EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0)) << name;
+	}
+}
+
+TEST_F(LvfMap, ImagePriorMapLocalisesWithinTargets)
+{
+	// A 6 m x 4 m room centred on the origin, and its floor plan drawn as
+	// an image at 5 cm per pixel (white free, black walls), as a user would
+	// give a scanned plan.
+	write("plan_room.yaml", R"(name: plan_room
+walls:
+  - {name: south, from: [-3, -2], to: [3, -2]}
+  - {name: north, from: [-3, 2], to: [3, 2]}
+  - {name: east, from: [3, -2], to: [3, 2]}
+  - {name: west, from: [-3, -2], to: [-3, 2]}
+path:
+  waypoints: [[-2, -0.5], [2, 0.5]]
+  step: 0.25
+)");
+	ASSERT_EQ(run(kSimulate, "--world plan_room.yaml --outdir . --format obs -q").status, 0);
+	// 6.2 m x 4.2 m; the walls' 0.1 m (two pixels) centred on the room's sides.
+	cv::Mat1b plan(84, 124, uchar(127));
+	plan(cv::Rect(1, 1, 122, 82)) = 0;
+	plan(cv::Rect(3, 3, 118, 78)) = 255;
+	cv::imwrite((m_dir / "plan.png").string(), plan);
+
+	// The robot is known to start near (-2, -0.5), heading about 14 deg.
+	write("start.ini", "[LocalizationExperiment]\ninit_PDF_min_x = -2.2\ninit_PDF_max_x = -1.8\n"
+					   "init_PDF_min_y = -0.7\ninit_PDF_max_y = -0.3\n"
+					   "init_PDF_min_yaw_deg = 9\ninit_PDF_max_yaw_deg = 19\n");
+	const auto r = run(kMap, "--input plan_room.rawlog --map plan.png --config start.ini --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("plan.png (image, 0.050 m per pixel, centred on the origin)"), std::string::npos) << r.out;
+	const auto e = localisationError(m_dir / "out/plan_room_poses.txt", m_dir / "plan_room_gt_poses.txt");
+	std::printf("image prior map: median error %.3f m, %.2f deg over %zu poses\n", e.medianPosition,
+				mrpt::RAD2DEG(e.medianHeading), e.matched);
+	EXPECT_EQ(e.matched, 18u);
+	EXPECT_LT(e.medianPosition, 0.05);
+	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
+}
+
+TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
+{
+	const std::string pfLocalization = LVF_PF_LOCALIZATION;
+	const std::string rawlog = kMrptDatasets + "/localization_demo.rawlog";
+	const std::string simplemap = kMrptDatasets + "/localization_demo.simplemap.gz";
+	const std::string ini = "/usr/share/mrpt/config_files/pf-localization/localization_demo.ini";
+	if (pfLocalization.empty() || !fs::exists(rawlog) || !fs::exists(simplemap) || !fs::exists(ini))
+		GTEST_SKIP() << "needs MRPT's pf-localization (mrpt-apps) and its demo data (mrpt-common)";
+	// MRPT's demo configuration, pointed at the installed files, without
+	// pf-localization's windows and 3D-scene logs: the same file for both.
+	std::string text = slurp(ini);
+	text = std::regex_replace(text, std::regex(R"(\nmap_file=[^\n]*)"), "\nmap_file=" + simplemap);
+	text = std::regex_replace(text, std::regex(R"(\nrawlog_file=[^\n]*)"), "\nrawlog_file=" + rawlog);
+	text = std::regex_replace(text, std::regex(R"(\nSHOW_PROGRESS_3D_REAL_TIME\s*=[^\n]*)"), "\nSHOW_PROGRESS_3D_REAL_TIME=false");
+	text = std::regex_replace(text, std::regex(R"(\n3DSceneFrequency=[^\n]*)"), "\n3DSceneFrequency=-1");
+	write("demo.ini", text);
+
+	const auto theirs = run(pfLocalization, "demo.ini");
+	ASSERT_EQ(theirs.status, 0) << theirs.err;
+	const auto ours = run(kMap, "--input " + rawlog + " --config demo.ini --outdir out -q");
+	ASSERT_EQ(ours.status, 0) << ours.err;
+
+	const auto reference = pfLocalizationEstimates(theirs.out + theirs.err);
+	const auto poses = lvf::metrics::readPoseFile((m_dir / "out/localization_demo_poses.txt").string());
+	ASSERT_EQ(reference.size(), poses.size());
+
+	// Both start from the same uniform spread over 20 m x 10 m (global
+	// localisation) with different random numbers: compare once converged.
+	const size_t converged = 10;
+	const auto a = compareSteps(poses, reference, converged);
+	std::printf("against pf-localization, steps %zu..%zu: median %.3f m (max %.3f m), heading %.2f deg\n",
+				converged, poses.size() - 1, a.medianPosition, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
+	::testing::Test::RecordProperty("median_position_difference_m", std::to_string(a.medianPosition));
+	EXPECT_LT(a.medianPosition, 0.10);
+	EXPECT_LT(a.maxPosition, 0.50);
+	EXPECT_LT(a.medianHeading, mrpt::DEG2RAD(2.0));
+}
+
+TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnARealLaserLog)
+{
+	const std::string pfLocalization = LVF_PF_LOCALIZATION;
+	const std::string log = std::string(LVF_SHARED_DATA_DIR) + "/laser/mit-csail.rawlog";
+	if (pfLocalization.empty() || !fs::exists(log))
+		GTEST_SKIP() << "needs MRPT's pf-localization and ../shared/data/laser/mit-csail.rawlog";
+	// Its first 300 scans (30 s); no prior map: lvf-map builds one by ICP-SLAM.
+	ASSERT_EQ(run(LVF_RAWLOG_EDIT, "--cut --from-index 0 --to-index 599 -i " + log + " -o cut.rawlog").status, 0);
+	const auto first = run(kMap, "--input cut.rawlog --outdir own -q");
+	ASSERT_EQ(first.status, 0) << first.err;
+	const auto start = lvf::metrics::readPoseFile((m_dir / "own/cut_poses.txt").string()).front().pose;
+
+	// The same map, settings and initial box for both: lvf-map's defaults,
+	// localising within 0.2 m and 5 degrees of where the run starts.
+	std::string ini = run(kMap, "--input x --dump-config").out;
+	auto set = [&](const std::string& key, const std::string& value) {
+		ini = std::regex_replace(ini, std::regex("\n" + key + " =[^\n]*"), "\n" + key + " = " + value);
+	};
+	set("map_file", "own/cut_prior_map.gridmap.gz\nrawlog_file = cut.rawlog\nlogOutput_dir = pfl\n"
+					"3DSceneFrequency = -1\nSHOW_PROGRESS_3D_REAL_TIME = false");
+	set("init_PDF_min_x", std::to_string(start.x() - 0.2));
+	set("init_PDF_max_x", std::to_string(start.x() + 0.2));
+	set("init_PDF_min_y", std::to_string(start.y() - 0.2));
+	set("init_PDF_max_y", std::to_string(start.y() + 0.2));
+	set("init_PDF_min_yaw_deg", std::to_string(mrpt::RAD2DEG(start.phi()) - 5));
+	set("init_PDF_max_yaw_deg", std::to_string(mrpt::RAD2DEG(start.phi()) + 5));
+	write("real.ini", ini);
+
+	const auto theirs = run(pfLocalization, "real.ini");
+	ASSERT_EQ(theirs.status, 0) << theirs.err;
+	const auto ours = run(kMap, "--input cut.rawlog --map own/cut_prior_map.gridmap.gz --config real.ini --outdir out -q");
+	ASSERT_EQ(ours.status, 0) << ours.err;
+	const auto reference = pfLocalizationEstimates(theirs.out + theirs.err);
+	const auto poses = lvf::metrics::readPoseFile((m_dir / "out/cut_poses.txt").string());
+	ASSERT_EQ(reference.size(), 300u);
+	ASSERT_EQ(poses.size(), 300u);
+	const auto a = compareSteps(poses, reference, 0);
+	std::printf("mit-csail (300 scans) against pf-localization: median %.3f m (max %.3f m), heading %.2f deg\n",
+				a.medianPosition, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
+	EXPECT_LT(a.medianPosition, 0.05);
+	EXPECT_LT(a.maxPosition, 0.50);
+	EXPECT_LT(a.medianHeading, mrpt::DEG2RAD(1.0));
+}
+
+TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
+{
+	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/corridor_desk.rawlog";
+	write("prior.txt", "not a map\n");
+	write("bad.gridmap.gz", "not a grid\n");
+	{
+		// Two laser scans and no odometry at all.
+		mrpt::io::CFileGZOutputStream out((m_dir / "no_odometry.rawlog").string());
+		auto archive = mrpt::serialization::archiveFrom(out);
+		for (int k = 0; k < 2; k++)
+		{
+			mrpt::obs::CObservation2DRangeScan scan;
+			scan.sensorLabel = "LASER";
+			scan.timestamp = mrpt::Clock::fromDouble(1700000000.0 + k);
+			scan.aperture = static_cast<float>(M_PI);
+			scan.resizeScan(181);
+			for (size_t i = 0; i < 181; i++) scan.setScanRange(i, 2.0f), scan.setScanRangeValidity(i, true);
+			archive << scan;
+		}
+	}
+	write("key.ini", "[PF_options]\nBETTA = 0.5\n");
+	write("section.ini", "[ParticleFilter]\nBETA = 0.5\n");
+	write("number.ini", "[LocalizationExperiment]\nparticles_count = many\n");
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
+		{"--input " + sample + " --map bad.gridmap.gz", "bad.gridmap.gz: not a readable MRPT mrpt::maps::COccupancyGridMap2D"},
+		{"--input " + sample + " --start 50,0 --goal 8.5,0", "--start: start (50.00, 0.00) is outside the laser map"},
+		{"--input " + sample + " --start 0,0 --goal 4.2,1.2", "--goal: goal (4.20, 1.20) is inside an obstacle of the laser map"},
+		{"--input " + sample + " --start '0;0'", "--start: expected x,y in metres, got '0;0'"},
+		{"--input no_odometry.rawlog", "no_odometry.rawlog: no odometry"},
+		{"--input missing.rawlog", "missing.rawlog: input rawlog not found"},
+		{"--input " + sample + " --config key.ini", "key.ini: [PF_options] BETTA: unknown key"},
+		{"--input " + sample + " --config section.ini", "section.ini: [ParticleFilter]: unknown section"},
+		{"--input " + sample + " --config number.ini", "number.ini: [LocalizationExperiment] particles_count"},
+	};
+	for (const auto& [args, message] : cases)
+	{
+		const auto r = run(kMap, args + " --outdir out");
+		EXPECT_EQ(r.status, 2) << args;
+		EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+		EXPECT_NE(r.err.find("lvf-map: error: " + message), std::string::npos) << args << "\n" << r.err;
+		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
+	}
+}
+
+TEST_F(LvfMap, DumpConfigIsTheShippedDefault)
+{
+	const auto r = run(kMap, "--input x --dump-config");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_EQ(keyLines(r.out), keyLines(slurp(std::string(LVF_SHARE_DIR) + "/config/map.ini")));
+	// ...and it reads back as it is.
+	write("dump.ini", r.out);
+	const auto again = run(kMap, "--input x --config dump.ini --dump-config");
+	EXPECT_EQ(again.out, r.out);
+}
