@@ -59,22 +59,35 @@ CStereoLaserSimulator::Frame CStereoLaserSimulator::simulateNextFrame(
 {
 	if (m_nextFrame >= frameCount())
 		throw std::logic_error("CStereoLaserSimulator: no frames left");
+	const size_t index = m_nextFrame++;
+	return simulateAt(
+		index, mrpt::poses::CPose2D(m_world->path[index]),
+		m_options.startTime + m_options.framePeriod * static_cast<double>(index), true,
+		withDepth);
+}
+
+CStereoLaserSimulator::Frame CStereoLaserSimulator::simulateAt(
+	size_t index, const mrpt::poses::CPose2D& truePose, double time, bool withStereo,
+	bool withDepth)
+{
 	Frame f;
-	f.index = m_nextFrame++;
-	f.truePose = mrpt::poses::CPose2D(m_world->path[f.index]);
+	f.index = index;
+	f.truePose = truePose;
 	f.odometry = m_odometry->update(f.truePose);
-	f.timestamp = mrpt::Clock::fromDouble(
-		m_options.startTime + m_options.framePeriod * static_cast<double>(f.index));
+	f.timestamp = mrpt::Clock::fromDouble(time);
 	const mrpt::poses::CPose3D robot(f.truePose);
 	// Independent noise streams per frame and sensor, so frame k's noise does
 	// not depend on how many random numbers earlier frames drew.
 	const uint64_t frameSeed = uint64_t(m_options.seed) * 1000003ULL + f.index;
 	f.scan = m_laser->scan(*m_geometry, robot, frameSeed, f.timestamp);
-	const auto images = m_stereo->render(*m_geometry, robot, frameSeed, withDepth);
-	f.stereo = m_stereo->toObservation(
-		images, mrpt::Clock::fromDouble(
-					mrpt::Clock::toDouble(f.timestamp) + m_options.stereoDelay));
-	f.leftDepth = images.leftDepth;
+	if (withStereo)
+	{
+		const auto images = m_stereo->render(*m_geometry, robot, frameSeed, withDepth);
+		f.stereo = m_stereo->toObservation(
+			images, mrpt::Clock::fromDouble(
+						mrpt::Clock::toDouble(f.timestamp) + m_options.stereoDelay));
+		f.leftDepth = images.leftDepth;
+	}
 	f.truthScan = truthScan(*m_world, robot, *f.scan);
 	return f;
 }

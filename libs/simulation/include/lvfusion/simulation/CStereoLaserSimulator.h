@@ -61,6 +61,14 @@ class CStereoLaserSimulator : public mrpt::rtti::CObject
 	size_t frameCount() const { return m_world ? m_world->path.size() : 0; }
 	/** Frames must be simulated in order (odometry accumulates). */
 	Frame simulateNextFrame(bool withDepth);
+	/** The sensors at an arbitrary true pose and time (closed-loop runs,
+	 * where the path is not known in advance). `index` seeds the frame's
+	 * noise; odometry accumulates over calls, so call in time order.
+	 * `withStereo` false skips the cameras (laser-only runs), `withDepth`
+	 * also returns the left camera's depth. */
+	Frame simulateAt(
+		size_t index, const mrpt::poses::CPose2D& truePose, double time,
+		bool withStereo, bool withDepth);
 
 	const World& world() const { return *m_world; }
 	const TOptions& options() const { return m_options; }

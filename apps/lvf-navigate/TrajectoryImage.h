@@ -1,0 +1,16 @@
+#pragma once
+// The run over the ground truth, like the paper's Figs. 8 and 13: the world's
+// obstacles in the robot's height band (black), the cells the robot's own
+// grid took as obstacles (grey), its path (red), start (green), target and
+// tolerance (blue), and where it hit something (a red cross).
+
+#include <lvfusion/navigation/NavigationRun.h>
+
+#include <string>
+
+namespace lvf::apps
+{
+void writeTrajectoryImage(
+	const lvf::navigation::NavigationScenario& scenario, const lvf::navigation::NavigationRun& run,
+	double targetTolerance, const std::string& path);
+}

@@ -1,0 +1,268 @@
+// lvf-navigate: closed-loop navigation in simulated worlds (issue 4). See
+// README.md and libs/navigation/include/lvfusion/navigation/NavigationRun.h.
+
+#include "BatchTable.h"
+#include "TrajectoryImage.h"
+
+#include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/navigation/HolonomicMethods.h>
+#include <lvfusion/navigation/NavigationRun.h>
+#include <lvfusion/navigation/RandomScenario.h>
+#include <lvfusion/plugin/registerAllClasses.h>
+#include <lvfusion/simulation/WorldLoader.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/system/string_utils.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+using lvf::common::InputError;
+namespace nav = lvf::navigation;
+
+namespace
+{
+const std::string kApp = "lvf-navigate";
+const std::string kDefaultConfig = std::string(LVF_SHARE_DIR) + "/config/navigate.ini";
+const std::string kDefaultWorld = std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml";
+
+std::vector<std::string> splitList(const std::string& text)
+{
+	std::vector<std::string> items;
+	mrpt::system::tokenize(text, ",", items);
+	return items;
+}
+
+/** "x,y[,deg]" with exactly `count` numbers; "nan" parses (a NaN pose is a
+ * scenario the run reports, not a typo). */
+std::vector<double> parseNumbers(const std::string& text, size_t count, const std::string& source)
+{
+	const auto items = splitList(text);
+	std::vector<double> v;
+	for (const auto& item : items)
+	{
+		char* end = nullptr;
+		const std::string t = mrpt::system::trim(item);
+		v.push_back(std::strtod(t.c_str(), &end));
+		if (t.empty() || *end != '\0') throw InputError(source, "", "'" + t + "' is not a number");
+	}
+	if (v.size() != count) throw InputError(source, "", mrpt::format("expected %zu comma-separated numbers, got '%s'", count, text.c_str()));
+	return v;
+}
+
+std::string readText(const std::string& path)
+{
+	lvf::common::openIniFile(path);	 // the line check: a typo is an error, not a skipped line
+	std::ifstream in(path);
+	std::stringstream s;
+	s << in.rdbuf();
+	return s.str();
+}
+
+/** A private folder for MRPT's PTG look-up tables during a run or batch. */
+class TemporaryFolder
+{
+   public:
+	TemporaryFolder()
+	{
+		std::string pattern = (std::filesystem::temp_directory_path() / "lvf-navigate-XXXXXX").string();
+		if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder");
+		m_path = pattern;
+	}
+	~TemporaryFolder()
+	{
+		std::error_code ignored;
+		std::filesystem::remove_all(m_path, ignored);
+	}
+	const std::string& path() const { return m_path; }
+
+   private:
+	std::string m_path;
+};
+
+int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setup, const std::string& outdir, bool quiet)
+{
+	lvf::common::StagedOutputFiles files(outdir);
+	const std::string name = scenario.world.name;
+	const std::string navlog = name + "_navlog";
+	TemporaryFolder ptgCache;
+	setup.ptgCacheDir = ptgCache.path();
+	setup.navigatorLogDir = files.stage(navlog + "/");
+	std::filesystem::create_directories(setup.navigatorLogDir);
+	lvf::common::RawlogWriter rawlog(files.stage(name + "_run.rawlog"), lvf::common::RawlogFormat::ActionsSensoryFrames);
+	setup.onSensing = [&](const auto& frame, const auto& result) {
+		lvf::common::RawlogFrame f;
+		f.timestamp = frame.timestamp;
+		f.odometry = frame.odometry;
+		f.observations.push_back(frame.scan);
+		if (frame.stereo) f.observations.push_back(frame.stereo);
+		f.observations.push_back(result.fused);
+		rawlog.append(f);
+	};
+	const auto run = nav::runNavigation(scenario, setup);
+	rawlog.close();
+	const auto& m = run.metrics;
+	const std::string line = mrpt::format(
+		"%s: %s %s %s: %s", kApp.c_str(), name.c_str(), setup.method.c_str(),
+		nav::sensingName(setup.sensing), m.summary().c_str());
+	lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
+	std::ofstream(files.stage(name + "_metrics.txt")) << line << "\n" << m.detail << "\n";
+	files.commit();
+	std::cout << line << "\n";
+	if (!quiet)
+		std::cout << "  " << m.detail << "\n  wrote " << name << "_{trajectory.png,run.rawlog,metrics.txt}, "
+				  << navlog << "/ in " << files.outputDir() << "\n";
+	return nav::outcomeExitStatus(m.outcome);
+}
+
+int runBatch(
+	int count, uint32_t firstSeed, const std::vector<nav::RoomKind>& kinds,
+	const std::vector<std::string>& methods, const std::vector<nav::Sensing>& sensings,
+	nav::NavigationSetup setup, const std::string& outdir, bool quiet)
+{
+	lvf::common::StagedOutputFiles files(outdir);
+	TemporaryFolder ptgCache;
+	setup.ptgCacheDir = ptgCache.path();
+	std::vector<lvf::apps::BatchRow> rows;
+	for (const auto kind : kinds)
+		for (int i = 0; i < count; i++)
+		{
+			const auto scenario = nav::randomScenario(firstSeed + uint32_t(i), kind);
+			for (const auto& method : methods)
+				for (const auto sensing : sensings)
+				{
+					setup.method = method;
+					setup.sensing = sensing;
+					auto& row = rows.emplace_back();
+					row = {nav::roomKindName(kind), scenario.world.name, method, nav::sensingName(sensing), nav::runNavigation(scenario, setup).metrics};
+					if (!quiet)
+						std::cout << mrpt::format("%s %s %s: %s\n", row.world.c_str(), method.c_str(), row.sensing.c_str(), row.metrics.summary().c_str()) << std::flush;
+				}
+		}
+	lvf::apps::writeBatchCsv(rows, files.stage("batch.csv"));
+	std::ostringstream table;
+	lvf::apps::printBatchTable(rows, table);
+	std::ofstream(files.stage("batch.txt")) << table.str();
+	files.commit();
+	std::cout << table.str() << "  wrote batch.csv, batch.txt in " << files.outputDir() << "\n";
+	return lvf::common::kExitOk;
+}
+
+int run(int argc, char** argv)
+{
+	TCLAP::CmdLine cmd(
+		"lvf-navigate: closed-loop navigation in a simulated world. Each control step the "
+		"simulator renders the laser (and the stereo pair), the paper's fusion (or the laser "
+		"alone) updates the robot's occupancy grid, MRPT's CReactiveNavigationSystem with the "
+		"chosen holonomic method steers, and a differential-drive robot moves; collisions are "
+		"judged against the full 3D world. Writes the trajectory over the true obstacles (PNG), "
+		"the run's rawlog, MRPT's navigation log and a metrics line. --batch N runs N random "
+		"rooms per room kind x methods x sensing and writes a table and CSV. Exit status of a "
+		"single run: 0 reached, 3 collision / timeout / navigator error, 4 scenario not runnable "
+		"(start in collision, target inside an obstacle, NaN pose), 2 bad input.",
+		' ', "0.1.0");
+	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file (YAML, see share/lvfusion/worlds/README.md; default: the box room, Fig. 7)", false, "", "W.yaml", cmd);
+	TCLAP::ValueArg<int> argRandom("r", "random-world", "A random room of this seed instead of --world (first seed with --batch; default 1)", false, -1, "SEED", cmd);
+	TCLAP::ValueArg<std::string> argRoomKinds("", "room-kind", "Random rooms: overhangs (tables, shelves, floating boxes) or visible (floor boxes only); with --batch a comma list (default: overhangs,visible)", false, "", "KIND[,KIND]", cmd);
+	TCLAP::ValueArg<std::string> argMethod("m", "method", "Holonomic method (a registered class name: CHolonomicND, CHolonomicVFF, CHolonomicFullEval, ...; default: holonomic_method of the config)", false, "", "CLASS", cmd);
+	TCLAP::ValueArg<std::string> argMethods("", "methods", "With --batch: comma list of holonomic methods (default: --method)", false, "", "A,B", cmd);
+	TCLAP::ValueArg<std::string> argSensing("s", "sensing", "fused (laser + stereo, default) or laser; with --batch a comma list", false, "fused", "MODE", cmd);
+	TCLAP::ValueArg<std::string> argConfig("c", "config", "Navigation INI: [NavigationLoop] plus MRPT's reactive navigator sections (default: " + kDefaultConfig + ")", false, kDefaultConfig, "FILE.ini", cmd);
+	TCLAP::ValueArg<std::string> argSensors("", "sensors-config", "Simulator INI (default: built-in, see sensors.ini)", false, "", "FILE.ini", cmd);
+	TCLAP::ValueArg<std::string> argFusion("", "fusion-config", "Fusion INI (default: built-in, see fusion.ini)", false, "", "FILE.ini", cmd);
+	TCLAP::ValueArg<std::string> argStart("", "start", "Start pose instead of the world's first path pose", false, "", "X,Y,DEG", cmd);
+	TCLAP::ValueArg<std::string> argTarget("", "target", "Target instead of the world's", false, "", "X,Y", cmd);
+	TCLAP::ValueArg<double> argTimeout("", "timeout", "Simulated seconds before giving up (default: [NavigationLoop] timeout)", false, 0, "S", cmd);
+	TCLAP::ValueArg<int> argBatch("b", "batch", "Run N random rooms per room kind", false, 0, "N", cmd);
+	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out", "DIR", cmd);
+	TCLAP::SwitchArg argQuiet("q", "quiet", "Print only the metrics line (or table) and errors", cmd);
+	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
+
+	lvf::registerAllClasses();
+	nav::NavigationSetup setup;
+	const auto navConfig = lvf::common::openIniFile(argConfig.getValue());
+	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
+	setup.navigatorConfig = readText(argConfig.getValue());
+	if (argTimeout.isSet())
+	{
+		if (!(argTimeout.getValue() > 0)) throw InputError("--timeout", "", "must be > 0");
+		setup.loop.timeout = argTimeout.getValue();
+	}
+	if (!argSensors.getValue().empty())
+		setup.sensors.loadFromConfigFile(*lvf::common::openIniFile(argSensors.getValue()), "CStereoLaserSimulator");
+	if (!argFusion.getValue().empty())
+		setup.fusion.loadFromConfigFile(*lvf::common::openIniFile(argFusion.getValue()), "CLaserStereoFusion");
+	const std::string method = argMethod.getValue().empty()
+		? navConfig->read_string("CAbstractPTGBasedReactive", "holonomic_method", "CHolonomicND")
+		: argMethod.getValue();
+	nav::requireHolonomicMethod(method, argMethod.getValue().empty() ? argConfig.getValue() : "--method");
+	setup.method = method;
+
+	std::vector<nav::Sensing> sensings;
+	for (const auto& s : splitList(argSensing.getValue())) sensings.push_back(nav::parseSensing(s, "--sensing"));
+	if (sensings.empty()) throw InputError("--sensing", "", "give fused or laser");
+	const bool batch = argBatch.isSet();
+	if (argRandom.isSet() && argRandom.getValue() < 0) throw InputError("--random-world", "", "must be >= 0");
+	if (!batch && argWorld.isSet() && argRandom.isSet()) throw InputError("--random-world", "", "give either --world or --random-world");
+	std::vector<nav::RoomKind> kinds;
+	for (const auto& k : splitList(argRoomKinds.getValue().empty() ? "overhangs,visible" : argRoomKinds.getValue()))
+		kinds.push_back(nav::parseRoomKind(k, "--room-kind"));
+
+	if (batch)
+	{
+		if (argBatch.getValue() < 1) throw InputError("--batch", "", "must be >= 1");
+		if (argWorld.isSet() || argStart.isSet() || argTarget.isSet())
+			throw InputError("--batch", "", "runs random rooms: --world, --start and --target do not apply");
+		std::vector<std::string> methods = splitList(argMethods.getValue().empty() ? method : argMethods.getValue());
+		for (auto& m : methods)
+		{
+			m = mrpt::system::trim(m);
+			nav::requireHolonomicMethod(m, "--methods");
+		}
+		const uint32_t firstSeed = argRandom.isSet() ? uint32_t(argRandom.getValue()) : 1;
+		return runBatch(argBatch.getValue(), firstSeed, kinds, methods, sensings, setup, argOutdir.getValue(), argQuiet.getValue());
+	}
+	if (argMethods.isSet()) throw InputError("--methods", "", "only with --batch (use --method)");
+	if (sensings.size() != 1 || (argRoomKinds.isSet() && kinds.size() != 1))
+		throw InputError("--sensing", "", "a single run takes one sensing mode and one room kind");
+	setup.sensing = sensings.front();
+
+	nav::NavigationScenario scenario;
+	if (argRandom.isSet())
+		scenario = nav::randomScenario(uint32_t(argRandom.getValue()), kinds.front());
+	else
+	{
+		const std::string path = argWorld.getValue().empty() ? kDefaultWorld : argWorld.getValue();
+		scenario.world = lvf::simulation::loadWorldFile(path);
+		if (scenario.world.path.empty() && !argStart.isSet())
+			throw InputError(path, "path", "no start pose (give a path or --start)");
+		if (!scenario.world.target && !argTarget.isSet())
+			throw InputError(path, "target", "no navigation target (add target: [x, y] or give --target)");
+		if (!scenario.world.path.empty()) scenario.start = scenario.world.path.front();
+		if (scenario.world.target) scenario.target = *scenario.world.target;
+	}
+	if (argStart.isSet())
+	{
+		const auto v = parseNumbers(argStart.getValue(), 3, "--start");
+		scenario.start = mrpt::math::TPose2D(v[0], v[1], mrpt::DEG2RAD(v[2]));
+	}
+	if (argTarget.isSet())
+	{
+		const auto v = parseNumbers(argTarget.getValue(), 2, "--target");
+		scenario.target = mrpt::math::TPoint2D(v[0], v[1]);
+	}
+	return runSingle(scenario, setup, argOutdir.getValue(), argQuiet.getValue());
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	return lvf::common::runApp(kApp, [&] { return run(argc, argv); });
+}

@@ -1,0 +1,48 @@
+#pragma once
+// The robot's memory of obstacles, as two MRPT occupancy grids of the same
+// geometry, fed at the robot's pose:
+//  - the laser grid: every laser scan, as usual;
+//  - the vision grid: the fused scan, but only the bearings the cameras see.
+// A cell is an obstacle when either grid says so. The split matters: a laser
+// ray passing *under* a table top says nothing about the top, so laser free
+// space must not erase what vision found; only vision looking again can. The
+// navigator is fed these cells rather than the last scan, so an overhang
+// stays an obstacle after it leaves the cameras' narrow view (the paper's
+// local map, Sec. 4).
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+namespace lvf::navigation
+{
+class LocalObstacleGrid
+{
+   public:
+	/** Covers [xMin, xMax] x [yMin, yMax] (world frame) at `resolution`;
+	 * a cell is an obstacle when its free probability is below `occupiedBelow`. */
+	LocalObstacleGrid(
+		double xMin, double xMax, double yMin, double yMax, double resolution,
+		double occupiedBelow);
+
+	void insertLaser(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robot);
+	/** `scan`'s bearings out of the cameras' view must be marked invalid:
+	 * they are left alone, not taken as free space. */
+	void insertVision(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robot);
+
+	bool obstacle(int cx, int cy) const;
+	/** Centres of obstacle cells within `range` of the robot, in the robot's
+	 * frame (what CRobot2NavInterface::senseObstacles returns). */
+	void obstaclesNear(
+		const mrpt::poses::CPose2D& robot, double range, mrpt::maps::CSimplePointsMap& out) const;
+
+	/** Cell geometry (both grids share it). */
+	const mrpt::maps::COccupancyGridMap2D& geometry() const { return m_laser; }
+
+   private:
+	mrpt::maps::COccupancyGridMap2D m_laser, m_vision;
+	float m_occupiedBelow;
+};
+
+}  // namespace lvf::navigation

@@ -1,0 +1,222 @@
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/metrics/ScanMetrics.h>
+#include <lvfusion/navigation/NavigationRun.h>
+#include <lvfusion/navigation/SimulatedRobotInterface.h>
+#include <lvfusion/navigation/WorldCollision.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/math/CPolygon.h>
+#include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
+#include <mrpt/system/CTicTac.h>
+
+#include <cmath>
+
+namespace lvf::navigation
+{
+using lvf::fusion::CLaserStereoFusion;
+using lvf::simulation::CStereoLaserSimulator;
+
+const char* sensingName(Sensing s) { return s == Sensing::Fused ? "fused" : "laser"; }
+
+Sensing parseSensing(const std::string& name, const std::string& source)
+{
+	if (name == "fused") return Sensing::Fused;
+	if (name == "laser") return Sensing::Laser;
+	throw lvf::common::InputError(source, "", "'" + name + "' is not a sensing mode (fused, laser)");
+}
+
+namespace
+{
+bool finite(const mrpt::math::TPose2D& p)
+{
+	return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.phi);
+}
+
+/** The robot's cylinder as the polygon the PTGs check against: a 16-gon
+ * around the circle (circumscribed, so the polygon never under-covers it). */
+mrpt::math::CPolygon robotShape(double radius)
+{
+	constexpr int n = 16;
+	const double r = radius / std::cos(M_PI / n);
+	mrpt::math::CPolygon shape;
+	for (int i = 0; i < n; i++)
+		shape.AddVertex(r * std::cos(2 * M_PI * i / n), r * std::sin(2 * M_PI * i / n));
+	return shape;
+}
+
+/** The fused scan with the bearings the cameras do not see made invalid:
+ * there it is only the laser again, which must not clear vision's cells. */
+mrpt::obs::CObservation2DRangeScan::Ptr inCameraView(
+	const mrpt::obs::CObservation2DRangeScan& fusedScan,
+	const mrpt::obs::CObservationStereoImages& stereo,
+	const lvf::fusion::CLaserStereoFusion::TOptions& fusion)
+{
+	auto out = std::make_shared<mrpt::obs::CObservation2DRangeScan>(fusedScan);
+	std::vector<float> ranges(fusedScan.getScanSize());
+	for (size_t i = 0; i < ranges.size(); i++)
+		ranges[i] = fusedScan.getScanRangeValidity(i) ? fusedScan.getScanRange(i) : INFINITY;
+	const auto inView = lvf::metrics::bearingsInView(fusedScan, ranges, stereo, fusion.band, fusion.depth.zMax);
+	for (size_t i = 0; i < ranges.size(); i++)
+		if (!inView[i]) out->setScanRangeValidity(i, false);
+	return out;
+}
+
+/** Checks a scenario can be run at all; fills `m` and returns false if not. */
+bool checkScenario(const NavigationScenario& s, const WorldCollision& collision, NavigationMetrics& m)
+{
+	if (!finite(s.start) || !std::isfinite(s.target.x) || !std::isfinite(s.target.y))
+	{
+		m.outcome = Outcome::InvalidPose;
+		m.detail = "start " + s.start.asString() + " or target " + s.target.asString() + " is not finite";
+		return false;
+	}
+	if (const auto c = collision.clearance(mrpt::math::TPoint2D(s.start)); c.distance < 0)
+	{
+		m.outcome = Outcome::StartInCollision;
+		m.minClearance = c.distance;
+		m.detail = mrpt::format("the robot starts %.3f m into '%s'", -c.distance, collision.boxName(c.box).c_str());
+		return false;
+	}
+	if (const auto c = collision.clearance(s.target); c.distance < 0)
+	{
+		m.outcome = Outcome::TargetInObstacle;
+		m.detail = mrpt::format("the robot cannot stand at the target: %.3f m into '%s'", -c.distance, collision.boxName(c.box).c_str());
+		return false;
+	}
+	return true;
+}
+
+}  // namespace
+
+NavigationRun runNavigation(const NavigationScenario& scenario, const NavigationSetup& setup)
+{
+	NavigationRun run;
+	auto& m = run.metrics;
+	const auto& world = scenario.world;
+	const auto& loop = setup.loop;
+	const WorldCollision collision(world, world.robot);
+	if (!checkScenario(scenario, collision, m)) return run;
+
+	double xMin, xMax, yMin, yMax;
+	world.footprintBounds(xMin, xMax, yMin, yMax, 1.0);
+	run.grid = std::make_unique<LocalObstacleGrid>(
+		xMin, xMax, yMin, yMax, loop.gridResolution, loop.occupiedBelow);
+	CStereoLaserSimulator sim(world, setup.sensors);
+	CLaserStereoFusion fusion(setup.fusion);
+	mrpt::kinematics::CVehicleSimul_DiffDriven vehicle;
+	vehicle.setCurrentGTPose(scenario.start);
+	SimulatedRobotInterface robot(vehicle, *run.grid, loop.obstacleRange);
+	robot.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+
+	mrpt::config::CConfigFileMemory config(setup.navigatorConfig);
+	config.write("CAbstractPTGBasedReactive", "holonomic_method", setup.method);
+	mrpt::nav::CReactiveNavigationSystem navigator(robot, false, false);
+	navigator.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+	// MRPT offers only const access to this profiler, which otherwise prints
+	// its statistics to stdout when the navigator is destroyed; the object
+	// itself is not const, so the cast is well defined.
+	const_cast<mrpt::system::CTimeLogger&>(navigator.getDelaysTimeLogger()).enable(false);
+	navigator.setLogFileDirectory(setup.navigatorLogDir);
+	navigator.enableLogFile(!setup.navigatorLogDir.empty());
+	navigator.loadConfigFile(config);
+	// Not read from the INI by MRPT 2.5: set after loading.
+	navigator.params_abstract_ptg_navigator.ptg_cache_files_directory = setup.ptgCacheDir;
+	navigator.changeRobotShape(robotShape(world.robot.radius));
+	navigator.initialize();
+
+	mrpt::nav::CAbstractNavigator::TNavigationParams goal;
+	goal.target.target_coords = mrpt::math::TPose2D(scenario.target.x, scenario.target.y, 0);
+	goal.target.targetAllowedDistance = float(loop.targetTolerance);
+	navigator.navigate(&goal);
+
+	const bool fused = setup.sensing == Sensing::Fused;
+	mrpt::math::TPose2D pose = scenario.start;
+	m.trajectory.push_back(pose);
+	m.minClearance = collision.clearance(mrpt::math::TPoint2D(pose)).distance;
+	double cycleSeconds = 0;
+	mrpt::system::CTicTac timer;
+	for (size_t cycle = 0;; cycle++)
+	{
+		timer.Tic();
+		if (cycle % size_t(loop.sensingEvery) == 0)
+		{
+			const double t = setup.sensors.startTime + m.time;
+			const auto frame = sim.simulateAt(m.sensingUpdates++, mrpt::poses::CPose2D(pose), t, fused, false);
+			CLaserStereoFusion::Result r;
+			if (!fused)
+				r = CLaserStereoFusion::laserOnly(*frame.scan, "laser-only run");
+			else
+			{
+				try
+				{
+					r = fusion.process(*frame.scan, *frame.stereo, mrpt::format("%s: t=%.1f s", world.name.c_str(), m.time));
+				}
+				catch (const lvf::common::InputError& e)
+				{
+					r = CLaserStereoFusion::laserOnly(*frame.scan, e.what());
+				}
+			}
+			const mrpt::poses::CPose2D at(pose);
+			run.grid->insertLaser(*frame.scan, at);
+			if (fused && !r.fellBackToLaser)
+				run.grid->insertVision(*inCameraView(*r.fused, *frame.stereo, setup.fusion), at);
+			if (setup.onSensing) setup.onSensing(frame, r);
+		}
+		navigator.navigationStep();
+		vehicle.simulateOneTimeStep(loop.controlPeriod);
+		cycleSeconds += timer.Tac();
+		m.cycles++;
+		m.time += loop.controlPeriod;
+
+		const auto next = vehicle.getCurrentGTPose();
+		if (!finite(next))
+		{
+			m.outcome = Outcome::InvalidPose;
+			m.detail = "the robot's pose became " + next.asString();
+			break;
+		}
+		m.pathLength += std::hypot(next.x - pose.x, next.y - pose.y);
+		pose = next;
+		m.trajectory.push_back(pose);
+		m.finalDistance = std::hypot(pose.x - scenario.target.x, pose.y - scenario.target.y);
+		const auto c = collision.clearance(mrpt::math::TPoint2D(pose));
+		if (c.distance < m.minClearance)
+		{
+			m.minClearance = c.distance;
+			m.minClearanceBox = c.box >= 0 ? collision.boxName(c.box) : "";
+		}
+		if (c.distance < 0)
+		{
+			m.outcome = Outcome::Collision;
+			m.collisions = 1;
+			m.detail = mrpt::format(
+				"hit '%s' at (%.2f, %.2f) after %.1f s", collision.boxName(c.box).c_str(), pose.x, pose.y, m.time);
+			break;
+		}
+		if (m.finalDistance <= loop.targetTolerance)
+		{
+			m.outcome = Outcome::Reached;
+			m.detail = mrpt::format("reached the target after %.1f s", m.time);
+			break;
+		}
+		const auto state = navigator.getCurrentState();
+		if (state == mrpt::nav::CAbstractNavigator::NAV_ERROR || state == mrpt::nav::CAbstractNavigator::IDLE)
+		{
+			m.outcome = Outcome::NavigatorError;
+			const auto& why = navigator.getErrorReason().error_msg;
+			m.detail = mrpt::format(
+				"the navigator stopped %.2f m from the target after %.1f s: %s", m.finalDistance, m.time,
+				why.empty() ? "(no reason given)" : why.c_str());
+			break;
+		}
+		if (m.time >= loop.timeout - 1e-9)
+		{
+			m.outcome = Outcome::Timeout;
+			m.detail = mrpt::format("still %.2f m from the target after %.1f s", m.finalDistance, m.time);
+			break;
+		}
+	}
+	m.meanCycleMs = 1e3 * cycleSeconds / double(std::max<size_t>(1, m.cycles));
+	return run;
+}
+
+}  // namespace lvf::navigation
