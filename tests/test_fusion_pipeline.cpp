@@ -60,13 +60,15 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	RecordProperty("phantom_rate", std::to_string(total.phantomRate()));
 	EXPECT_GT(total.hidden, 100u);
 	// Issue #3 asks for recall >= 0.90 and phantom rate <= 0.02 here; the
-	// pipeline does not reach that yet (recall 0.757, phantom rate 0.045 when
-	// this was written: thin table tops seen almost edge-on and objects near
-	// z_max are missed, and at 4-5 m a quarter-pixel of disparity is 0.1 m,
-	// the metrics' tolerance). These bounds guard the present level against
-	// regressions; tighten them as it improves. With the exact model
-	// (test_visual_depth) the targets are met.
-	EXPECT_GE(total.recall(), 0.75);
+	// pipeline does not reach that yet (recall 0.810, phantom rate 0.048
+	// when this was written; seeds 11-16, not used for tuning: 0.914,
+	// 0.074). Thin table tops seen almost edge-on and objects near z_max are
+	// missed; at 4-5 m a quarter-pixel of disparity is 0.1 m, the metrics'
+	// tolerance; most phantoms are the bearing beside an object (its
+	// silhouette matched half a window too wide). These bounds guard the
+	// present level against regressions; tighten them as it improves. With
+	// the exact model (test_visual_depth) the targets are met.
+	EXPECT_GE(total.recall(), 0.80);
 	EXPECT_LE(total.phantomRate(), 0.05);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }
@@ -102,10 +104,47 @@ TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)
 		total.add(s);
 	}
 	std::cout << "phantom bearings " << total.phantoms << " of " << total.inView << " in view\n";
-	// The aim is none. Measured: 5 of 148, each on the bearing just beside a
-	// box's silhouette, where a window half on the box is matched at the
-	// box's depth (window-based stereo's "foreground fattening"; a test of
-	// the model's predicted occlusions removed them but cost 6% recall in
-	// the random rooms, see the issue notes). This guards the present level.
-	EXPECT_LE(total.phantomRate(), 0.04);
+	// The aim is none. Measured: 7 of 149 (5 of 148 before the search
+	// stopped taking the flank of an obstacle's NCC peak for the model, which
+	// raised recall in the random rooms from 0.754 to 0.810), each on the
+	// bearing just beside a box's silhouette, where a window half on the box
+	// is matched at the box's depth (window-based stereo's "foreground
+	// fattening"; a test of the model's predicted occlusions removed them
+	// but cost 6% recall in the random rooms, see the issue notes). This
+	// guards the present level.
+	EXPECT_LE(total.phantomRate(), 0.05);
+}
+
+TEST(FusionPipeline, CoreWindowKeepsMatchesOffTheBackgroundBesideObjects)
+{
+	// A window centred on the background just beside an object's silhouette
+	// holds part of the object and matches at the object's depth, so objects
+	// come out too wide (phantoms on the bearing beside them). The core
+	// window must match too, and there it does not. Counted against the
+	// simulator's per-pixel depth: matches more than 0.3 m off.
+	auto wrongShare = [](int coreWindow) {
+		fusion::CLaserStereoFusion::TOptions o;
+		o.depth.coreWindow = coreWindow;
+		size_t wrong = 0, all = 0;
+		for (uint32_t seed = 1; seed <= 3; seed++)
+		{
+			simulation::CStereoLaserSimulator sim(
+				simulation::generateRandomWorld(seed), simulation::CStereoLaserSimulator::TOptions());
+			fusion::CLaserStereoFusion fusion(o);
+			for (size_t k = 0; k < sim.frameCount(); k++)
+			{
+				const auto f = sim.simulateNextFrame(true);
+				const auto r = fusion.process(*f.scan, *f.stereo, "frame");
+				EXPECT_FALSE(r.geometry.f <= 0);
+				for (const auto& p : r.search.points)
+					wrong += std::abs(r.geometry.fB() / p.disparity - f.leftDepth(int(p.v), int(p.u))) > 0.3;
+				all += r.search.points.size();
+			}
+		}
+		std::cout << "core window " << coreWindow << ": " << all << " matches, " << wrong
+				  << " more than 0.3 m off the true depth\n";
+		return double(wrong) / double(std::max<size_t>(all, 1));
+	};
+	const double without = wrongShare(0), with = wrongShare(5);
+	EXPECT_LT(with, 0.9 * without);
 }

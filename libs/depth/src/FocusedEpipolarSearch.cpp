@@ -32,6 +32,11 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
 	verifyFullLine = ini.flag("verify_full_line", verifyFullLine);
 	leftRightCheck = ini.flag("left_right_check", leftRightCheck);
+	coreWindow = ini.integer("core_window", coreWindow, 0, 31);
+	if (coreWindow % 2 == 0 && coreWindow != 0)
+		throw lvf::common::InputError(
+			ini.sourceName(), "[" + section + "] core_window", "must be odd, or 0 for off");
+	coreAcceptNcc = ini.real("core_accept_ncc", coreAcceptNcc, -1, 1);
 	ini.rejectUnknownKeys();
 }
 
@@ -51,6 +56,8 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "search only windows with at least this std: matching needs more texture than checking [grey levels]");
 	writeOption(c, s, "peak_context", peakContext, "NCC also scored this far outside the allowed range, so a peak cut by a bound is seen [px]");
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
+	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
+	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
 	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
 }
 
@@ -94,14 +101,45 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 	return set;
 }
 
+namespace
+{
+/** NCC of the (2 half + 1)^2 windows centred at left (u, v) and right (x, v). */
+float windowNcc(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x, int half)
+{
+	double sl = 0, sr = 0, sll = 0, srr = 0, slr = 0;
+	for (int dy = -half; dy <= half; dy++)
+	{
+		const float* l = left.ptr<float>(v + dy) + u;
+		const float* r = right.ptr<float>(v + dy) + x;
+		for (int dx = -half; dx <= half; dx++)
+		{
+			const double a = l[dx], b = r[dx];
+			sl += a, sr += b, sll += a * a, srr += b * b, slr += a * b;
+		}
+	}
+	const double n = (2 * half + 1) * (2 * half + 1);
+	const double cov = slr - sl * sr / n, varL = sll - sl * sl / n, varR = srr - sr * sr / n;
+	return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
+}
+
+/** The columns around the peak at `peak` over which the scores descend
+ * from it on both sides (its flanks), searched no farther than [lo, hi]
+ * beyond the peak. */
+std::pair<int, int> peakExtent(EpipolarScores& scores, int peak, int lo, int hi)
+{
+	int first = peak, last = peak;
+	while (first - 1 >= std::min(lo, peak) && scores.at(first - 1) < scores.at(first)) first--;
+	while (last + 1 <= std::max(hi, peak) && scores.at(last + 1) < scores.at(last)) last++;
+	return {first, last};
+}
+}  // namespace
+
 bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 	EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const
 {
 	// Its own peak's shoulders, which descend from it, do not count.
 	scores.compute(xNear, xFar);
-	int peakLo = bestX, peakHi = bestX;
-	while (peakLo - 1 >= xNear && scores.at(peakLo - 1) < scores.at(peakLo)) peakLo--;
-	while (peakHi + 1 <= xFar && scores.at(peakHi + 1) < scores.at(peakHi)) peakHi++;
+	const auto [peakLo, peakHi] = peakExtent(scores, bestX, xNear, xFar);
 	for (int x = xNear; x <= xFar; x++)
 		if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin) return false;
 	return true;
@@ -155,20 +193,26 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
 	const double fB = g.fB();
 	const int context = m_options.peakContext;
+	out.outcome = cv::Mat1b::zeros(H, W);
+	auto mark = [&](int v, int u, SearchOutcome o) { out.outcome(v, u) = static_cast<uint8_t>(o); };
 
 	for (int v = half; v < H - half; v += m_options.pixelStride)
 		for (int u = half; u < W - half; u += m_options.pixelStride)
 		{
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
-			if ((state != PixelState::Inconsistent && state != PixelState::Unmodelled) ||
-				evaluation.leftStd(v, u) < m_options.minTextureStd)
+			if (state != PixelState::Inconsistent && state != PixelState::Unmodelled) continue;
+			if (evaluation.leftStd(v, u) < m_options.minTextureStd)
+			{
+				mark(v, u, SearchOutcome::Untextured);
 				continue;
+			}
 			const double dModel = evaluation.modelDisparity(v, u);
 			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
 			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band);
 			if (set.empty() || set.integerCount() == 0)
 			{
 				out.stats.skippedEmptyRange++;
+				mark(v, u, SearchOutcome::EmptyRange);
 				continue;
 			}
 			out.stats.searchedPixels++;
@@ -193,6 +237,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (best < m_options.acceptNcc)
 			{
 				out.stats.rejectedWeak++;
+				mark(v, u, SearchOutcome::Weak);
 				continue;
 			}
 			// A true peak: both neighbours lower, even if outside the set.
@@ -200,6 +245,20 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (before >= best || after >= best)
 			{
 				out.stats.rejectedNotPeak++;
+				mark(v, u, SearchOutcome::NotPeak);
+				continue;
+			}
+			// A window centred just beside an object's silhouette holds part
+			// of the object and can match at its depth ("foreground
+			// fattening", objects up to half a window too wide); the pixel's
+			// own neighbourhood, a core window, matches there only if it is
+			// on the object itself. (Tested before the verifications below,
+			// which score the whole line: it is the cheapest.)
+			if (m_options.coreWindow > 0 &&
+				windowNcc(L, R, u, v, bestX, m_options.coreWindow / 2) < m_options.coreAcceptNcc)
+			{
+				out.stats.rejectedCore++;
+				mark(v, u, SearchOutcome::CoreMismatch);
 				continue;
 			}
 			// Unique within the stretch searched: no other local maximum close to it.
@@ -211,13 +270,18 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			// The laser's model must explain the pixel clearly worse: if the
 			// right image matches about as well at the model's own disparity
 			// (best of a few columns, for its sub-pixel error), the evidence
-			// does not favour an obstacle.
+			// does not favour an obstacle. Columns on the flanks of the
+			// match's own peak do not count: an obstacle less than a
+			// couple of pixels of disparity in front of the wall (far away)
+			// has the model's column on its flank, and that is the obstacle
+			// scoring, not the model.
 			if (!ambiguous && dModel > 0)
 			{
 				const int xModel = static_cast<int>(std::lround(column(dModel)));
 				scores.compute(xModel - 2, xModel + 2);
+				const auto [peakLo, peakHi] = peakExtent(scores, bestX, xModel - 2, xModel + 2);
 				for (int x = xModel - 2; x <= xModel + 2 && !ambiguous; x++)
-					ambiguous = scores.at(x) > best - m_options.uniquenessMargin;
+					ambiguous = (x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin;
 			}
 			// Where the criteria cut the true match away (it lies behind the
 			// model, or farther than z_max), a side lobe can win inside the
@@ -231,6 +295,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (ambiguous)
 			{
 				out.stats.rejectedAmbiguous++;
+				mark(v, u, SearchOutcome::Ambiguous);
 				continue;
 			}
 			// A window that straddles a depth edge or holds only smooth shading
@@ -242,6 +307,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 								 static_cast<int>(std::floor(column(fB / (2 * m_options.zMax))))))
 			{
 				out.stats.rejectedLeftRight++;
+				mark(v, u, SearchOutcome::LeftRight);
 				continue;
 			}
 			// Parabola through the peak and its neighbours.
@@ -253,11 +319,13 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (!band.contains(p.z()))
 			{
 				out.stats.rejectedOutOfBand++;
+				mark(v, u, SearchOutcome::OutOfBand);
 				continue;
 			}
 			out.points.push_back({static_cast<float>(u), static_cast<float>(v),
 								  static_cast<float>(disparity), best, p});
 			out.stats.accepted++;
+			mark(v, u, SearchOutcome::Accepted);
 		}
 	out.stats.disparitiesTested = scores.evaluations();
 	return out;

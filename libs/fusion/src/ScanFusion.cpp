@@ -15,7 +15,7 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	lvf::common::IniSection ini(source, section);
 	minPoints = ini.integer("min_points", minPoints, 1, 10000);
 	clusterTolerance = ini.real("cluster_tolerance", clusterTolerance, 0, 10);
-	centreSlack = ini.real("centre_slack", centreSlack, 0, 0.5);
+	centreSlack = ini.real("centre_slack", centreSlack, -0.5, 0.5);
 	ini.rejectUnknownKeys();
 }
 
@@ -24,7 +24,7 @@ void ScanFusion::TOptions::saveToConfigFile(
 {
 	writeOption(c, s, "min_points", minPoints, "visual points a bearing needs before vision may shorten it");
 	writeOption(c, s, "cluster_tolerance", clusterTolerance, "those points must lie within this span of range [m]");
-	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin");
+	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin (negative: reach past it on both sides by that much)");
 }
 
 std::vector<float> ScanFusion::visualRanges(

@@ -37,6 +37,21 @@ struct VisualPoint
 	Eigen::Vector3d robot;	//!< triangulated point, robot frame [m]
 };
 
+/** What the search made of one pixel of its grid (Result::outcome). */
+enum class SearchOutcome : uint8_t
+{
+	NotSearched = 0,  //!< off the grid, consistent with the model, or not judged
+	Untextured,	 //!< inconsistent, but too little texture to match
+	EmptyRange,	 //!< the criteria leave no disparity to search
+	Weak,  //!< the best score is below accept_ncc
+	NotPeak,  //!< the best score sits on a bound, not on a peak
+	Ambiguous,	//!< another peak, the model or the rest of the line scores as well
+	LeftRight,	//!< the match does not find its way back
+	OutOfBand,	//!< triangulated outside the robot's height band
+	CoreMismatch,  //!< the match fails on the core window (core_window)
+	Accepted  //!< a visual point
+};
+
 struct DepthSearchStats
 {
 	size_t searchedPixels = 0;	//!< inconsistent pixels on the stride grid with a non-empty range
@@ -45,6 +60,7 @@ struct DepthSearchStats
 	size_t accepted = 0;  //!< matches kept (in the band)
 	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
 	size_t rejectedLeftRight = 0;  //!< failed the left-right check
+	size_t rejectedCore = 0;	//!< failed on the core window
 };
 
 class FocusedEpipolarSearch
@@ -71,6 +87,12 @@ class FocusedEpipolarSearch
 		/** The right window of a match, matched back along the left row over
 		 * the same disparities, must find the left pixel again (+-1 px). */
 		bool leftRightCheck = true;
+		/** A match must also hold on this smaller window centred on the
+		 * pixel [px, odd; 0: off]: a window centred just outside an
+		 * object's silhouette still holds the object and matches at its
+		 * depth, so objects would come out up to half a window too wide. */
+		int coreWindow = 5;
+		double coreAcceptNcc = 0.5;	 //!< the core window's NCC at the match
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
@@ -84,6 +106,8 @@ class FocusedEpipolarSearch
 	{
 		std::vector<VisualPoint> points;
 		DepthSearchStats stats;
+		/** SearchOutcome per left pixel, to see why nothing was found. */
+		cv::Mat1b outcome;
 	};
 
 	FocusedEpipolarSearch() = default;
