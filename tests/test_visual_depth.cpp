@@ -75,8 +75,15 @@ TEST(DisparitySet, CriteriaCombineIntoIntervals)
 	EXPECT_TRUE(s.empty());
 }
 
-TEST(VisualDepth, FindsFloatingBoxesTheLaserMisses)
+class VisualDepthModes : public ::testing::TestWithParam<bool>
 {
+};
+
+// Coarse-to-fine (the default) and the full-resolution search both.
+TEST_P(VisualDepthModes, FindsFloatingBoxesTheLaserMisses)
+{
+	depth::FocusedEpipolarSearch::TOptions opt;
+	opt.coarseToFine = GetParam();
 	// Four layouts of boxes floating in the band, scored together.
 	metrics::FusionScore total;
 	for (const char* boxes :
@@ -90,7 +97,7 @@ TEST(VisualDepth, FindsFloatingBoxesTheLaserMisses)
 		  "  - {pose: [4.0, -0.5, 5], size: [1.0, 0.4, 0.3], elevation: 0.6}\n"
 		  "  - {pose: [2.2, 1.0, 60], size: [0.5, 0.3, 0.3], elevation: 0.4}\n"})
 	{
-		const Outcome o = run(boxes);
+		const Outcome o = run(boxes, opt);
 		report("floating boxes", o);
 		total.add(o.score);
 	}
@@ -102,6 +109,8 @@ TEST(VisualDepth, FindsFloatingBoxesTheLaserMisses)
 	EXPECT_LE(total.phantomRate(), 0.02);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }
+INSTANTIATE_TEST_SUITE_P(Search, VisualDepthModes, ::testing::Values(true, false),
+	[](const auto& info) { return info.param ? "CoarseToFine" : "FullResolution"; });
 
 TEST(VisualDepth, TexturelessObstaclesGiveNoPhantoms)
 {

@@ -19,6 +19,7 @@
 // Everything runs on one thread (cv::setNumThreads(1)).
 
 #include <benchmark/benchmark.h>
+#include <lvfusion/common/ProcessMemory.h>
 #include <lvfusion/depth/DenseStereoBaseline.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/metrics/ScanMetrics.h>
@@ -243,12 +244,16 @@ const char* kBmName = "StereoBM";
 void printStageMedians(int passes)
 {
 	auto& f = FusionFixture::get();
-	// The fusion as configured, and with the model evaluated over the whole
-	// image (the paper's way), which the faster grid evaluation replaces.
+	// The fusion as configured; with the model evaluated over the whole
+	// image (the paper's way), which the faster grid evaluation replaces; and
+	// with every match searched at full resolution (no coarse-to-fine).
 	auto wholeImage = f.options;
 	wholeImage.evaluateSearchGridOnly = false;
+	auto fullResolution = f.options;
+	fullResolution.depth.coarseToFine = false;
 	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
-		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage}};
+		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
+		{"fusion, full-res search", fullResolution}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
 	lvf::bench::StageMedians medians;
@@ -335,6 +340,7 @@ const std::vector<std::tuple<std::string, std::string, std::string>> kComparison
 int main(int argc, char** argv)
 {
 	cv::setNumThreads(1);  // single-thread figures, for every method alike
+	lvf::common::retainLargeAllocations();	// as the apps do (ProcessMemory.h)
 	benchmark::Initialize(&argc, argv);
 	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 	RecordingReporter reporter;

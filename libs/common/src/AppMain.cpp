@@ -1,5 +1,6 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/ProcessMemory.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <cstdlib>
@@ -21,6 +22,7 @@ std::string firstLine(const std::string& s)
 
 int runApp(const std::string& appName, const std::function<int()>& body)
 {
+	retainLargeAllocations();  // every app handles frame after frame
 	try
 	{
 		return body();

@@ -1,5 +1,6 @@
 #include <lvfusion/depth/EpipolarScores.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,8 @@ namespace
 // noise divided by almost nothing.
 constexpr float kMinRightStd = 1.0f;  // [grey levels]
 constexpr float kNotComputed = std::numeric_limits<float>::quiet_NaN();
+/** Floats in the widest vector the cross-term loop is built for (AVX2). */
+constexpr int kVectorWidth = 8;
 }  // namespace
 
 EpipolarScores::EpipolarScores(
@@ -27,8 +30,10 @@ EpipolarScores::EpipolarScores(
 
 void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 {
-	for (int x : m_touched) m_scores[static_cast<size_t>(x)] = kNotComputed;
-	m_touched.clear();
+	if (m_touchedFirst <= m_touchedLast)
+		std::fill(m_scores.begin() + m_touchedFirst, m_scores.begin() + m_touchedLast + 1, kNotComputed);
+	m_touchedFirst = static_cast<int>(m_scores.size());
+	m_touchedLast = -1;
 	m_u = u;
 	m_v = v;
 	m_leftMean = leftMean;
@@ -81,6 +86,11 @@ void EpipolarScores::compute(int x0, int x1)
 	while (x0 <= x1 && !std::isnan(m_scores[static_cast<size_t>(x0)])) x0++;
 	while (x1 >= x0 && !std::isnan(m_scores[static_cast<size_t>(x1)])) x1--;
 	if (x0 > x1) return;
+	// A short stretch would run the cross-term loop without its vector
+	// body: widen it to whole vectors (more valid scores, for free).
+	const int padded = (x1 - x0 + kVectorWidth) / kVectorWidth * kVectorWidth;
+	x1 = std::min(x0 + padded - 1, lastColumn());
+	x0 = std::max(x1 - padded + 1, firstColumn());
 	const int n = x1 - x0 + 1;
 	m_cross.resize(static_cast<size_t>(n));
 	float* acc = m_cross.data();
@@ -88,14 +98,17 @@ void EpipolarScores::compute(int x0, int x1)
 	const float area = static_cast<float>((2 * m_half + 1) * (2 * m_half + 1));
 	const float* mean = m_rightMean.ptr<float>(m_v);
 	const float* deviation = m_rightStd.ptr<float>(m_v);
+	// Columns inside the stretch that were scored before get the same score
+	// again: cheaper than testing each, and the loop stays branch-free.
+	float* scores = m_scores.data();
+	const float leftMean = m_leftMean, leftStd = m_leftStd;
 	for (int x = x0; x <= x1; x++)
 	{
-		float& s = m_scores[static_cast<size_t>(x)];
-		if (std::isnan(s)) m_touched.push_back(x);
-		s = deviation[x] < kMinRightStd
-			? -1.f
-			: (acc[x - x0] / area - m_leftMean * mean[x]) / (m_leftStd * deviation[x]);
+		const float ncc = (acc[x - x0] / area - leftMean * mean[x]) / (leftStd * deviation[x]);
+		scores[x] = deviation[x] < kMinRightStd ? -1.f : ncc;
 	}
+	m_touchedFirst = std::min(m_touchedFirst, x0);
+	m_touchedLast = std::max(m_touchedLast, x1);
 	m_evaluations += static_cast<size_t>(n);
 }
 

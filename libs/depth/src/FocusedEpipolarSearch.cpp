@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace lvf::depth
 {
@@ -32,6 +33,7 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
 	verifyFullLine = ini.flag("verify_full_line", verifyFullLine);
 	leftRightCheck = ini.flag("left_right_check", leftRightCheck);
+	coarseToFine = ini.flag("coarse_to_fine", coarseToFine);
 	coreWindow = ini.integer("core_window", coreWindow, 0, 31);
 	if (coreWindow % 2 == 0 && coreWindow != 0)
 		throw lvf::common::InputError(
@@ -58,6 +60,7 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
 	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
 	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
+	writeOption(c, s, "coarse_to_fine", coarseToFine, "find and verify matches on the half-resolution pair, refine them on the full one (~8x fewer products)");
 	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
 }
 
@@ -122,16 +125,6 @@ float windowNcc(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int
 	return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
 }
 
-/** The columns around the peak at `peak` over which the scores descend
- * from it on both sides (its flanks), searched no farther than [lo, hi]
- * beyond the peak. */
-std::pair<int, int> peakExtent(EpipolarScores& scores, int peak, int lo, int hi)
-{
-	int first = peak, last = peak;
-	while (first - 1 >= std::min(lo, peak) && scores.at(first - 1) < scores.at(first)) first--;
-	while (last + 1 <= std::max(hi, peak) && scores.at(last + 1) < scores.at(last)) last++;
-	return {first, last};
-}
 }  // namespace
 
 bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
@@ -139,28 +132,131 @@ bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 {
 	// Its own peak's shoulders, which descend from it, do not count.
 	scores.compute(xNear, xFar);
-	const auto [peakLo, peakHi] = peakExtent(scores, bestX, xNear, xFar);
+	const auto [peakLo, peakHi] = scores.flanks(bestX, xNear, xFar);
 	for (int x = xNear; x <= xFar; x++)
 		if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin) return false;
 	return true;
 }
 
 bool FocusedEpipolarSearch::findsItsWayBack(
-	EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightStd, int u, int v,
-	int x, int xNear, int xFar) const
+	MatchingLevel& level, int u, int v, int x, int xNear, int xFar) const
 {
 	// Disparity d pairs left column u' with right column x when
 	// u' = x - cxOffset + d. The disparities verified from u, those of right
 	// columns [xNear, xFar], are d = u + cxOffset - [xNear, xFar]; from x they
 	// reach the left columns u + x - [xFar, xNear].
 	const int lo = u + x - xFar, hi = u + x - xNear;
-	back.reset(x, v, rightMean(v, x), std::max(rightStd(v, x), 1e-3f));
+	EpipolarScores& back = level.backward;
+	back.reset(x, v, level.rightMean(v, x), std::max(level.rightStd(v, x), 1e-3f));
 	back.compute(lo, hi);
 	int bestU = -1;
 	float best = -2.f;
 	for (int c = std::max(lo, back.firstColumn()); c <= std::min(hi, back.lastColumn()); c++)
 		if (back.at(c) > best) best = back.at(c), bestU = c;
 	return std::abs(bestU - u) <= 1;
+}
+
+bool FocusedEpipolarSearch::passesLocalTests(
+	MatchingLevel& full, const PixelQuery& q, int bestX, float best, Match& m) const
+{
+	EpipolarScores& scores = full.forward;
+	m.x = bestX;
+	m.score = best;
+	if (best < m_options.acceptNcc)
+	{
+		m.outcome = SearchOutcome::Weak;
+		return false;
+	}
+	// A true peak: both neighbours lower, even if outside the set.
+	m.before = scores.at(bestX - 1), m.after = scores.at(bestX + 1);
+	if (m.before >= best || m.after >= best)
+	{
+		m.outcome = SearchOutcome::NotPeak;
+		return false;
+	}
+	// A window centred just beside an object's silhouette holds part of the
+	// object and can match at its depth ("foreground fattening", objects up
+	// to half a window too wide); the pixel's own neighbourhood, a core
+	// window, matches there only if it is on the object itself.
+	if (m_options.coreWindow > 0 &&
+		windowNcc(full.left, full.right, q.u, q.v, bestX, m_options.coreWindow / 2) < m_options.coreAcceptNcc)
+	{
+		m.outcome = SearchOutcome::CoreMismatch;
+		return false;
+	}
+	// The laser's model must explain the pixel clearly worse: if the right
+	// image matches about as well at the model's own disparity (best of a
+	// few columns, for its sub-pixel error), the evidence does not favour an
+	// obstacle. Columns on the flanks of the match's own peak do not count:
+	// an obstacle less than a couple of pixels of disparity in front of the
+	// wall (far away) has the model's column on its flank, and that is the
+	// obstacle scoring, not the model.
+	if (q.modelDisparity > 0)
+	{
+		const int xModel = static_cast<int>(std::lround(q.column(q.modelDisparity)));
+		scores.compute(xModel - 2, xModel + 2);
+		const auto [peakLo, peakHi] = scores.flanks(bestX, xModel - 2, xModel + 2);
+		for (int x = xModel - 2; x <= xModel + 2; x++)
+			if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin)
+			{
+				m.outcome = SearchOutcome::Ambiguous;
+				return false;
+			}
+	}
+	m.outcome = SearchOutcome::Accepted;
+	return true;
+}
+
+FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchAtFullResolution(
+	MatchingLevel& full, const PixelQuery& q) const
+{
+	// Score the allowed columns, plus some context beyond each bound
+	// (column x holds disparity u + cxOffset - x).
+	EpipolarScores& scores = full.forward;
+	scores.reset(q.u, q.v, q.leftMean, q.leftStd);
+	const DisparitySet& set = q.set;
+	const int context = m_options.peakContext;
+	const int xFirst = static_cast<int>(std::ceil(q.column(set[set.size() - 1].hi)));
+	const int xLast = static_cast<int>(std::floor(q.column(set[0].lo)));
+	scores.compute(xFirst - context, xLast + context);
+	int bestX = -1;
+	float best = -2.f;
+	for (size_t k = 0; k < set.size(); k++)
+	{
+		const int xLo = std::max(static_cast<int>(std::ceil(q.column(set[k].hi))), scores.firstColumn());
+		const int xHi = std::min(static_cast<int>(std::floor(q.column(set[k].lo))), scores.lastColumn());
+		for (int x = xLo; x <= xHi; x++)
+			if (scores.at(x) > best) best = scores.at(x), bestX = x;
+	}
+	Match m;
+	if (bestX < 0 || !passesLocalTests(full, q, bestX, best, m)) return m;
+	// Unique within the stretch searched: no other local maximum close to it.
+	for (int x = std::max(xFirst - context, scores.firstColumn()) + 1;
+		 x < std::min(xLast + context, scores.lastColumn()); x++)
+		if (std::abs(x - bestX) > 1 && scores.at(x) > best - m_options.uniquenessMargin &&
+			scores.at(x - 1) <= scores.at(x) && scores.at(x + 1) <= scores.at(x))
+		{
+			m.outcome = SearchOutcome::Ambiguous;
+			return m;
+		}
+	// Where the criteria cut the true match away (it lies behind the model,
+	// or farther than z_max), a side lobe can win inside the set: a
+	// candidate must also beat every other peak of the line, from twice
+	// z_max to z_min.
+	const double fB = q.g.fB();
+	const int lineNear = static_cast<int>(std::ceil(q.column(fB / m_options.zMin)));
+	const int lineFar = static_cast<int>(std::floor(q.column(fB / (2 * m_options.zMax))));
+	if (m_options.verifyFullLine && !beatsTheRestOfTheLine(scores, bestX, best, lineNear, lineFar))
+	{
+		m.outcome = SearchOutcome::Ambiguous;
+		return m;
+	}
+	// A window that straddles a depth edge or holds only smooth shading can
+	// match a wrong place well; matched back from there, the right window
+	// then prefers its own true partner over this pixel.
+	if (m_options.leftRightCheck && !findsItsWayBack(full, q.u, q.v, bestX, lineNear, lineFar))
+		m.outcome = SearchOutcome::LeftRight;
+	return m;
 }
 
 FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
@@ -171,39 +267,27 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	Result out;
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
-	const cv::Size window(windowSize, windowSize);
-	cv::Mat1f L, R, meanR, meanRR, rightStd;
-	left.convertTo(L, CV_32F);
-	right.convertTo(R, CV_32F);
-	cv::blur(R, meanR, window);
-	cv::blur(R.mul(R), meanRR, window);
-	// Rounding can leave a flat window's variance just below 0.
-	cv::sqrt(cv::max(meanRR - meanR.mul(meanR), 0.0), rightStd);
-	EpipolarScores scores(L, R, meanR, rightStd, half);
-	// The same scoring the other way round, for the left-right check: a right
-	// window against the left windows of its row. Their statistics are the
-	// whole image's (the evaluation may have judged only the search grid).
-	cv::Mat1f meanL, meanLL, leftStd;
-	cv::blur(L, meanL, window);
-	cv::blur(L.mul(L), meanLL, window);
-	cv::sqrt(cv::max(meanLL - meanL.mul(meanL), 0.0), leftStd);
-	EpipolarScores backScores(R, L, meanL, leftStd, half);
+	MatchingLevel full(left, right, half);
+	std::unique_ptr<MatchingLevel> coarse;
+	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
 
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
 	const double fB = g.fB();
-	const int context = m_options.peakContext;
 	out.outcome = cv::Mat1b::zeros(H, W);
-	auto mark = [&](int v, int u, SearchOutcome o) { out.outcome(v, u) = static_cast<uint8_t>(o); };
-
+	auto& stats = out.stats;
 	for (int v = half; v < H - half; v += m_options.pixelStride)
 		for (int u = half; u < W - half; u += m_options.pixelStride)
 		{
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
 			if (state != PixelState::Inconsistent && state != PixelState::Unmodelled) continue;
+			auto mark = [&](SearchOutcome o, size_t& counter) {
+				out.outcome(v, u) = static_cast<uint8_t>(o);
+				counter++;
+			};
 			if (evaluation.leftStd(v, u) < m_options.minTextureStd)
 			{
-				mark(v, u, SearchOutcome::Untextured);
+				mark(SearchOutcome::Untextured, stats.skippedUntextured);
 				continue;
 			}
 			const double dModel = evaluation.modelDisparity(v, u);
@@ -211,123 +295,38 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band);
 			if (set.empty() || set.integerCount() == 0)
 			{
-				out.stats.skippedEmptyRange++;
-				mark(v, u, SearchOutcome::EmptyRange);
+				mark(SearchOutcome::EmptyRange, stats.skippedEmptyRange);
 				continue;
 			}
-			out.stats.searchedPixels++;
-
-			// Score the allowed columns, plus some context beyond each bound
-			// (column x holds disparity u + cxOffset - x).
-			scores.reset(u, v, evaluation.leftMean(v, u), evaluation.leftStd(v, u));
-			auto column = [&](double d) { return u + g.cxOffset - d; };
-			const int xFirst = static_cast<int>(std::ceil(column(set[set.size() - 1].hi)));
-			const int xLast = static_cast<int>(std::floor(column(set[0].lo)));
-			scores.compute(xFirst - context, xLast + context);
-			int bestX = -1;
-			float best = -2.f;
-			for (size_t k = 0; k < set.size(); k++)
+			stats.searchedPixels++;
+			const PixelQuery query{u, v, evaluation.leftMean(v, u), evaluation.leftStd(v, u), dModel, set, g};
+			const Match m = coarse ? matchCoarseToFine(full, *coarse, query) : matchAtFullResolution(full, query);
+			switch (m.outcome)
 			{
-				const int xLo = std::max(static_cast<int>(std::ceil(column(set[k].hi))), scores.firstColumn());
-				const int xHi = std::min(static_cast<int>(std::floor(column(set[k].lo))), scores.lastColumn());
-				for (int x = xLo; x <= xHi; x++)
-					if (scores.at(x) > best) best = scores.at(x), bestX = x;
-			}
-			if (bestX < 0) continue;
-			if (best < m_options.acceptNcc)
-			{
-				out.stats.rejectedWeak++;
-				mark(v, u, SearchOutcome::Weak);
-				continue;
-			}
-			// A true peak: both neighbours lower, even if outside the set.
-			const float before = scores.at(bestX - 1), after = scores.at(bestX + 1);
-			if (before >= best || after >= best)
-			{
-				out.stats.rejectedNotPeak++;
-				mark(v, u, SearchOutcome::NotPeak);
-				continue;
-			}
-			// A window centred just beside an object's silhouette holds part
-			// of the object and can match at its depth ("foreground
-			// fattening", objects up to half a window too wide); the pixel's
-			// own neighbourhood, a core window, matches there only if it is
-			// on the object itself. (Tested before the verifications below,
-			// which score the whole line: it is the cheapest.)
-			if (m_options.coreWindow > 0 &&
-				windowNcc(L, R, u, v, bestX, m_options.coreWindow / 2) < m_options.coreAcceptNcc)
-			{
-				out.stats.rejectedCore++;
-				mark(v, u, SearchOutcome::CoreMismatch);
-				continue;
-			}
-			// Unique within the stretch searched: no other local maximum close to it.
-			bool ambiguous = false;
-			for (int x = std::max(xFirst - context, scores.firstColumn()) + 1;
-				 x < std::min(xLast + context, scores.lastColumn()) && !ambiguous; x++)
-				ambiguous = std::abs(x - bestX) > 1 && scores.at(x) > best - m_options.uniquenessMargin &&
-					scores.at(x - 1) <= scores.at(x) && scores.at(x + 1) <= scores.at(x);
-			// The laser's model must explain the pixel clearly worse: if the
-			// right image matches about as well at the model's own disparity
-			// (best of a few columns, for its sub-pixel error), the evidence
-			// does not favour an obstacle. Columns on the flanks of the
-			// match's own peak do not count: an obstacle less than a
-			// couple of pixels of disparity in front of the wall (far away)
-			// has the model's column on its flank, and that is the obstacle
-			// scoring, not the model.
-			if (!ambiguous && dModel > 0)
-			{
-				const int xModel = static_cast<int>(std::lround(column(dModel)));
-				scores.compute(xModel - 2, xModel + 2);
-				const auto [peakLo, peakHi] = peakExtent(scores, bestX, xModel - 2, xModel + 2);
-				for (int x = xModel - 2; x <= xModel + 2 && !ambiguous; x++)
-					ambiguous = (x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin;
-			}
-			// Where the criteria cut the true match away (it lies behind the
-			// model, or farther than z_max), a side lobe can win inside the
-			// set: a candidate must also beat every other peak of the line,
-			// from twice z_max to z_min.
-			if (!ambiguous && m_options.verifyFullLine)
-				ambiguous = !beatsTheRestOfTheLine(
-					scores, bestX, best,
-					static_cast<int>(std::ceil(column(fB / m_options.zMin))),
-					static_cast<int>(std::floor(column(fB / (2 * m_options.zMax)))));
-			if (ambiguous)
-			{
-				out.stats.rejectedAmbiguous++;
-				mark(v, u, SearchOutcome::Ambiguous);
-				continue;
-			}
-			// A window that straddles a depth edge or holds only smooth shading
-			// can match a wrong place well; matched back from there, the right
-			// window then prefers its own true partner over this pixel.
-			if (m_options.leftRightCheck &&
-				!findsItsWayBack(backScores, meanR, rightStd, u, v, bestX,
-								 static_cast<int>(std::ceil(column(fB / m_options.zMin))),
-								 static_cast<int>(std::floor(column(fB / (2 * m_options.zMax))))))
-			{
-				out.stats.rejectedLeftRight++;
-				mark(v, u, SearchOutcome::LeftRight);
-				continue;
+				case SearchOutcome::Weak: mark(m.outcome, stats.rejectedWeak); continue;
+				case SearchOutcome::NotPeak: mark(m.outcome, stats.rejectedNotPeak); continue;
+				case SearchOutcome::CoreMismatch: mark(m.outcome, stats.rejectedCore); continue;
+				case SearchOutcome::Ambiguous: mark(m.outcome, stats.rejectedAmbiguous); continue;
+				case SearchOutcome::LeftRight: mark(m.outcome, stats.rejectedLeftRight); continue;
+				case SearchOutcome::Accepted: break;
+				default: continue;
 			}
 			// Parabola through the peak and its neighbours.
-			const float curvature = before - 2 * best + after;
-			const float shift = curvature < 0 ? 0.5f * (before - after) / curvature : 0.f;
-			const double disparity = u + g.cxOffset - (bestX + shift);
+			const float curvature = m.before - 2 * m.score + m.after;
+			const float shift = curvature < 0 ? 0.5f * (m.before - m.after) / curvature : 0.f;
+			const double disparity = u + g.cxOffset - (m.x + shift);
 			if (disparity <= 0) continue;
 			const Eigen::Vector3d p = C + (fB / disparity) * ray;
 			if (!band.contains(p.z()))
 			{
-				out.stats.rejectedOutOfBand++;
-				mark(v, u, SearchOutcome::OutOfBand);
+				mark(SearchOutcome::OutOfBand, stats.rejectedOutOfBand);
 				continue;
 			}
 			out.points.push_back({static_cast<float>(u), static_cast<float>(v),
-								  static_cast<float>(disparity), best, p});
-			out.stats.accepted++;
-			mark(v, u, SearchOutcome::Accepted);
+								  static_cast<float>(disparity), m.score, p});
+			mark(SearchOutcome::Accepted, stats.accepted);
 		}
-	out.stats.disparitiesTested = scores.evaluations();
+	stats.disparitiesTested = full.forward.evaluations() + (coarse ? coarse->forward.evaluations() : 0);
 	return out;
 }
 

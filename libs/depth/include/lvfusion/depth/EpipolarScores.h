@@ -9,7 +9,9 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <vector>
 
@@ -34,8 +36,21 @@ class EpipolarScores
 	float at(int x)
 	{
 		if (x < firstColumn() || x > lastColumn()) return -2.f;
-		if (std::isnan(m_scores[static_cast<size_t>(x)])) compute(x, x);
+		// A miss scores a few columns around it at once: they are vectorised
+		// together for about the cost of one, and callers walk along the line.
+		if (std::isnan(m_scores[static_cast<size_t>(x)])) compute(x - kBlock / 2 + 1, x + kBlock / 2);
 		return m_scores[static_cast<size_t>(x)];
+	}
+
+	/** The columns around the peak at `peak` over which the scores descend
+	 * from it on both sides (its flanks), looked for no farther than
+	 * [lo, hi] (or the peak itself). */
+	std::pair<int, int> flanks(int peak, int lo, int hi)
+	{
+		int first = peak, last = peak;
+		while (first - 1 >= std::min(lo, peak) && at(first - 1) < at(first)) first--;
+		while (last + 1 <= std::max(hi, peak) && at(last + 1) < at(last)) last++;
+		return {first, last};
 	}
 
 	int firstColumn() const { return m_half; }
@@ -43,6 +58,7 @@ class EpipolarScores
 	size_t evaluations() const { return m_evaluations; }
 
    private:
+	static constexpr int kBlock = 8;  //!< columns scored together on a miss
 	const cv::Mat1f& m_left;
 	const cv::Mat1f& m_right;
 	const cv::Mat1f& m_rightMean;
@@ -50,7 +66,7 @@ class EpipolarScores
 	int m_half, m_u = 0, m_v = 0;
 	float m_leftMean = 0, m_leftStd = 1;
 	std::vector<float> m_scores;  // NaN: not computed yet
-	std::vector<int> m_touched;	 // columns to clear on reset
+	int m_touchedFirst = 0, m_touchedLast = -1;	 // the columns to clear on reset
 	std::vector<float> m_cross;	 // scratch: cross terms of a stretch
 	size_t m_evaluations = 0;
 };

@@ -6,21 +6,25 @@
 // For each inconsistent or unmodelled pixel (on a grid of `pixel_stride`; an
 // unmodelled one has no model depth, so only criterion c and the band bound
 // it), every integer disparity in the allowed set is scored by NCC between
-// the left window and
-// the right window on the same row. The best score is accepted only if it is
-// high, a true local maximum (its neighbours, even outside the allowed set,
-// score lower: a peak cut by a bound is the model surface or something out of
-// range, not an obstacle), and unique (no other local maximum within
-// `uniqueness_margin` of it, and the model's own disparity scoring clearly
-// less: evaluation can flag a pixel for reasons other than an obstacle, e.g.
-// fine texture, and then the model may still be the best explanation).
-// A parabola through the peak gives sub-pixel
-// disparity; triangulation gives a robot-frame point, kept if it lies in the
-// robot's height band.
+// the left window and the right window on the same row. The best score is
+// accepted only if it is high, a true local maximum (its neighbours, even
+// outside the allowed set, score lower: a peak cut by a bound is the model
+// surface or something out of range, not an obstacle), holds on a smaller
+// core window (not a window beside an object's silhouette), unique (no other
+// peak of the whole line within `uniqueness_margin` of it, and the model's
+// own disparity scoring clearly less: evaluation can flag a pixel for
+// reasons other than an obstacle, e.g. fine texture, and then the model may
+// still be the best explanation), and found again from the right image
+// (left-right check). With `coarse_to_fine` the stretch and the line are
+// scored on the half-resolution pair and the match refined at full
+// resolution (CoarseToFineMatch.cpp). A parabola through the peak gives
+// sub-pixel disparity; triangulation gives a robot-frame point, kept if it
+// lies in the robot's height band.
 
 #include <lvfusion/common/HeightBand.h>
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/EpipolarScores.h>
+#include <lvfusion/depth/MatchingLevel.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/config/CLoadableOptions.h>
 
@@ -55,8 +59,9 @@ enum class SearchOutcome : uint8_t
 struct DepthSearchStats
 {
 	size_t searchedPixels = 0;	//!< inconsistent pixels on the stride grid with a non-empty range
+	size_t skippedUntextured = 0;	//!< inconsistent pixels with too little texture to match
 	size_t skippedEmptyRange = 0;  //!< inconsistent pixels the criteria left nothing to search
-	size_t disparitiesTested = 0;  //!< NCC evaluations
+	size_t disparitiesTested = 0;  //!< NCC evaluations (both levels when coarse-to-fine)
 	size_t accepted = 0;  //!< matches kept (in the band)
 	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
 	size_t rejectedLeftRight = 0;  //!< failed the left-right check
@@ -93,6 +98,11 @@ class FocusedEpipolarSearch
 		 * depth, so objects would come out up to half a window too wide. */
 		int coreWindow = 5;
 		double coreAcceptNcc = 0.5;	 //!< the core window's NCC at the match
+		/** Find the match, and verify that it is unique and finds its way
+		 * back, on the half-resolution pair (windows of half the side, half
+		 * the columns: ~8x fewer products), then refine it on the full
+		 * pair, where the local tests and the sub-pixel peak are taken. */
+		bool coarseToFine = true;
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
@@ -128,15 +138,38 @@ class FocusedEpipolarSearch
 	DisparitySet allowedDisparities(
 		int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
 		int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const;
+	/** One left pixel to match: where, what the model says, what may be searched. */
+	struct PixelQuery
+	{
+		int u, v;
+		float leftMean, leftStd;  //!< its window, as the evaluation saw it
+		double modelDisparity;	//!< [px], 0: no model surface
+		const DisparitySet& set;
+		const lvf::evaluation::RectifiedGeometry& g;
+		/** Full-resolution right column of disparity d. */
+		double column(double d) const { return u + g.cxOffset - d; }
+	};
+	/** The outcome for one pixel; when Accepted, the full-resolution column
+	 * of the match, its score and its neighbours' (for the sub-pixel peak). */
+	struct Match
+	{
+		SearchOutcome outcome = SearchOutcome::NotSearched;
+		int x = -1;
+		float score = -2, before = -2, after = -2;
+	};
+	Match matchAtFullResolution(MatchingLevel& full, const PixelQuery& q) const;
+	Match matchCoarseToFine(MatchingLevel& full, MatchingLevel& coarse, const PixelQuery& q) const;
+	/** The tests taken at full resolution around the best column: strong
+	 * enough, a true peak, the core window agrees, the model explains the
+	 * pixel clearly worse. Fills `m` and returns whether all pass. */
+	bool passesLocalTests(MatchingLevel& full, const PixelQuery& q, int bestX, float best, Match& m) const;
 	/** No other peak of the line within [xNear, xFar] scores within the
 	 * uniqueness margin of `best` at `bestX`. */
 	bool beatsTheRestOfTheLine(EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const;
 	/** Left-right check: the right window at column x, scored against the
 	 * left windows of row v over the disparities of right columns
 	 * [xNear, xFar] as seen from u, scores best at u (+-1). */
-	bool findsItsWayBack(
-		EpipolarScores& back, const cv::Mat1f& rightMean, const cv::Mat1f& rightStd, int u,
-		int v, int x, int xNear, int xFar) const;
+	bool findsItsWayBack(MatchingLevel& level, int u, int v, int x, int xNear, int xFar) const;
 
 	TOptions m_options;
 };

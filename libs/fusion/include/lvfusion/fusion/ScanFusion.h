@@ -34,7 +34,7 @@ class ScanFusion
 		 * (seeded rooms 1-6 and 11-16, 24 frames; Middlebury Motorcycle and
 		 * Recycle): +0.1: recall 0.867, phantom rate 0.073, Middlebury
 		 * recall 29 of 76; 0: 0.858, 0.059, 26 of 76; -0.1: 0.840, 0.050,
-		 * 22 of 76. */
+		 * 23 of 76. */
 		double centreSlack = 0.0;
 
 		void loadFromConfigFile(

@@ -1,0 +1,35 @@
+#pragma once
+// One resolution of the rectified pair, ready for window matching along rows:
+// float images, the window mean and deviation of every pixel of both (box
+// filters, once per frame), and an EpipolarScores each way (left windows
+// against the right row for the search, right windows against the left row
+// for the left-right check). The focused search keeps one at full
+// resolution and, for coarse-to-fine matching, one at half resolution.
+
+#include <lvfusion/depth/EpipolarScores.h>
+#include <opencv2/core.hpp>
+
+namespace lvf::depth
+{
+class MatchingLevel
+{
+   public:
+	/** Grey images, and the half side of the square matching window. */
+	MatchingLevel(const cv::Mat1b& left, const cv::Mat1b& right, int half);
+	/** The same pair at half resolution (Gaussian pyramid), windows of half
+	 * the side: a window there covers about the same scene. */
+	MatchingLevel(const MatchingLevel& finer, int half);
+	MatchingLevel(const MatchingLevel&) = delete;
+	MatchingLevel& operator=(const MatchingLevel&) = delete;
+
+	const int half;
+	cv::Mat1f left, right;
+	cv::Mat1f leftMean, leftStd, rightMean, rightStd;
+	EpipolarScores forward;	 //!< a left window against the right row
+	EpipolarScores backward;  //!< a right window against the left row
+
+   private:
+	MatchingLevel(cv::Mat1f left, cv::Mat1f right, int half);
+};
+
+}  // namespace lvf::depth

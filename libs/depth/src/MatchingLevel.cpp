@@ -1,0 +1,54 @@
+#include <lvfusion/depth/MatchingLevel.h>
+#include <opencv2/imgproc.hpp>
+
+namespace lvf::depth
+{
+namespace
+{
+cv::Mat1f asFloat(const cv::Mat1b& image)
+{
+	cv::Mat1f out;
+	image.convertTo(out, CV_32F);
+	return out;
+}
+
+cv::Mat1f pyramidDown(const cv::Mat1f& image)
+{
+	cv::Mat1f out;
+	cv::pyrDown(image, out);
+	return out;
+}
+
+void windowStatistics(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& deviation)
+{
+	const cv::Size window(2 * half + 1, 2 * half + 1);
+	cv::Mat1f meanSquare;
+	cv::blur(image, mean, window);
+	cv::blur(image.mul(image), meanSquare, window);
+	// Rounding can leave a flat window's variance just below 0.
+	cv::sqrt(cv::max(meanSquare - mean.mul(mean), 0.0), deviation);
+}
+}  // namespace
+
+MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h)
+	: half(h),
+	  left(std::move(l)),
+	  right(std::move(r)),
+	  forward(left, right, rightMean, rightStd, half),
+	  backward(right, left, leftMean, leftStd, half)
+{
+	windowStatistics(left, half, leftMean, leftStd);
+	windowStatistics(right, half, rightMean, rightStd);
+}
+
+MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h)
+	: MatchingLevel(asFloat(l), asFloat(r), h)
+{
+}
+
+MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
+	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h)
+{
+}
+
+}  // namespace lvf::depth
