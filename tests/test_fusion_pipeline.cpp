@@ -60,16 +60,16 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	RecordProperty("phantom_rate", std::to_string(total.phantomRate()));
 	EXPECT_GT(total.hidden, 100u);
 	// Issue #3 asks for recall >= 0.90 and phantom rate <= 0.02 here; the
-	// pipeline does not reach that yet (recall 0.817, phantom rate 0.040
-	// when this was written; seeds 11-16, not used for tuning: 0.918,
-	// 0.077). Thin table tops seen almost edge-on and objects near z_max are
+	// pipeline does not reach that yet (recall 0.813, phantom rate 0.033
+	// when this was written; seeds 11-16, not used for tuning: 0.905,
+	// 0.043). Thin table tops seen almost edge-on and objects near z_max are
 	// missed; at 4-5 m a quarter-pixel of disparity is 0.1 m, the metrics'
 	// tolerance; most phantoms are the bearing beside an object (its
 	// silhouette matched half a window too wide). These bounds guard the
 	// present level against regressions; tighten them as it improves. With
 	// the exact model (test_visual_depth) the targets are met.
 	EXPECT_GE(total.recall(), 0.80);
-	EXPECT_LE(total.phantomRate(), 0.05);
+	EXPECT_LE(total.phantomRate(), 0.04);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }
 
@@ -104,15 +104,12 @@ TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)
 		total.add(s);
 	}
 	std::cout << "phantom bearings " << total.phantoms << " of " << total.inView << " in view\n";
-	// The aim is none. Measured: 7 of 150 (5 of 148 before the search
-	// stopped taking the flank of an obstacle's NCC peak for the model, which
-	// raised recall in the random rooms from 0.754 to 0.810), each on the
-	// bearing just beside a box's silhouette, where a window half on the box
-	// is matched at the box's depth (window-based stereo's "foreground
-	// fattening"; a test of the model's predicted occlusions removed them
-	// but cost 6% recall in the random rooms, see the issue notes). This
-	// guards the present level.
-	EXPECT_LE(total.phantomRate(), 0.05);
+	// The aim is none. Measured: 1 of 147. The bearing just beside a box's
+	// silhouette is where they come from: a window half on the box matches
+	// at the box's depth (window-based stereo's "foreground fattening"); 5
+	// of 148 until each match's core window had to match better than at the
+	// model's disparity.
+	EXPECT_LE(total.phantomRate(), 0.02);
 }
 
 TEST(FusionPipeline, CoreWindowKeepsMatchesOffTheBackgroundBesideObjects)
@@ -120,8 +117,10 @@ TEST(FusionPipeline, CoreWindowKeepsMatchesOffTheBackgroundBesideObjects)
 	// A window centred on the background just beside an object's silhouette
 	// holds part of the object and matches at the object's depth, so objects
 	// come out too wide (phantoms on the bearing beside them). The core
-	// window must match too, and there it does not. Counted against the
-	// simulator's per-pixel depth: matches more than 0.3 m off.
+	// window must match too, and better than at the model's disparity (the
+	// background's), and there it does not. Counted against the simulator's
+	// per-pixel depth: matches more than 0.3 m off (measured 13.5% without,
+	// 8.5% with).
 	auto wrongShare = [](int coreWindow) {
 		fusion::CLaserStereoFusion::TOptions o;
 		o.depth.coreWindow = coreWindow;
@@ -146,5 +145,5 @@ TEST(FusionPipeline, CoreWindowKeepsMatchesOffTheBackgroundBesideObjects)
 		return double(wrong) / double(std::max<size_t>(all, 1));
 	};
 	const double without = wrongShare(0), with = wrongShare(5);
-	EXPECT_LT(with, 0.9 * without);
+	EXPECT_LT(with, 0.75 * without);
 }

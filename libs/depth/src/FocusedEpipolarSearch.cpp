@@ -58,7 +58,7 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "search only windows with at least this std: matching needs more texture than checking [grey levels]");
 	writeOption(c, s, "peak_context", peakContext, "NCC also scored this far outside the allowed range, so a peak cut by a bound is seen [px]");
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
-	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
+	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, better than at the model's disparity, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
 	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
 	writeOption(c, s, "coarse_to_fine", coarseToFine, "find and verify matches on the half-resolution pair, refine them on the full one (~8x fewer products)");
 	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
@@ -176,13 +176,29 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	}
 	// A window centred just beside an object's silhouette holds part of the
 	// object and can match at its depth ("foreground fattening", objects up
-	// to half a window too wide); the pixel's own neighbourhood, a core
-	// window, matches there only if it is on the object itself.
-	if (m_options.coreWindow > 0 &&
-		windowNcc(full.left, full.right, q.u, q.v, bestX, m_options.coreWindow / 2) < m_options.coreAcceptNcc)
+	// to half a window too wide). The pixel's own neighbourhood, a core
+	// window, tells: on the object it matches there, and better than at the
+	// model's disparity; on the background beside the object it matches
+	// poorly there, or the model (the surface behind) explains it at least
+	// as well.
+	if (m_options.coreWindow > 0)
 	{
-		m.outcome = SearchOutcome::CoreMismatch;
-		return false;
+		const int coreHalf = m_options.coreWindow / 2;
+		const float core = windowNcc(full.left, full.right, q.u, q.v, bestX, coreHalf);
+		bool modelExplainsCore = false;
+		if (q.modelDisparity > 0)
+		{
+			const int xModel = static_cast<int>(std::lround(q.column(q.modelDisparity)));
+			// Strictly better: the match's own column may be among these
+			// (an obstacle just in front of a far wall lies that close).
+			for (int x = xModel - 1; x <= xModel + 1 && !modelExplainsCore; x++)
+				modelExplainsCore = windowNcc(full.left, full.right, q.u, q.v, x, coreHalf) > core;
+		}
+		if (core < m_options.coreAcceptNcc || modelExplainsCore)
+		{
+			m.outcome = SearchOutcome::CoreMismatch;
+			return false;
+		}
 	}
 	// The laser's model must explain the pixel clearly worse: if the right
 	// image matches about as well at the model's own disparity (best of a

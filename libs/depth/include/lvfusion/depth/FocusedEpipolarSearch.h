@@ -52,7 +52,7 @@ enum class SearchOutcome : uint8_t
 	Ambiguous,	//!< another peak, the model or the rest of the line scores as well
 	LeftRight,	//!< the match does not find its way back
 	OutOfBand,	//!< triangulated outside the robot's height band
-	CoreMismatch,  //!< the match fails on the core window (core_window)
+	CoreMismatch,  //!< the core window does not match there, or the model explains it as well
 	Accepted  //!< a visual point
 };
 
@@ -93,9 +93,10 @@ class FocusedEpipolarSearch
 		 * the same disparities, must find the left pixel again (+-1 px). */
 		bool leftRightCheck = true;
 		/** A match must also hold on this smaller window centred on the
-		 * pixel [px, odd; 0: off]: a window centred just outside an
-		 * object's silhouette still holds the object and matches at its
-		 * depth, so objects would come out up to half a window too wide. */
+		 * pixel, and not better at the model's disparity [px, odd;
+		 * 0: off]: a window centred just outside an object's silhouette
+		 * still holds the object and matches at its depth, so objects would
+		 * come out up to half a window too wide. */
 		int coreWindow = 5;
 		double coreAcceptNcc = 0.5;	 //!< the core window's NCC at the match
 		/** Find the match, and verify that it is unique and finds its way
