@@ -142,3 +142,29 @@ TEST(VisualDepth, FindsBoxesJustInFrontOfTheFarWall)
 	// nearest the bearing) comes out just over 0.1 m too near.
 	EXPECT_LE(total.phantomRate(), 0.07);
 }
+
+TEST(ScanFusion, ClustersAtTheSearchedImageEdgeNeedNotStraddleTheirBearing)
+{
+	// A 1-degree scan; three points 2 m out, all just right of bearing 0
+	// (offsets +0.2 to +0.4 of a bin): inside the image they do not cover
+	// the bin's own ray, so the bin stays empty; from the outermost searched
+	// columns they may, since nothing beyond the image edge was searched.
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(M_PI);
+	scan.rightToLeft = true;
+	scan.resizeScan(181);
+	for (size_t i = 0; i < scan.getScanSize(); i++) scan.setScanRange(i, 8.f), scan.setScanRangeValidity(i, true);
+	std::vector<depth::VisualPoint> points;
+	for (double offset : {0.2, 0.3, 0.4})
+	{
+		const double bearing = offset * M_PI / 180;
+		depth::VisualPoint p;
+		p.u = 637;
+		p.robot = {2 * std::cos(bearing), 2 * std::sin(bearing), 0.6};
+		points.push_back(p);
+	}
+	const fusion::ScanFusion fusion;
+	EXPECT_TRUE(std::isinf(fusion.visualRanges(scan, points)[90]));
+	EXPECT_TRUE(std::isinf(fusion.visualRanges(scan, points, fusion::ScanFusion::SearchedColumns{2, 700, 3})[90]));
+	EXPECT_NEAR(fusion.visualRanges(scan, points, fusion::ScanFusion::SearchedColumns{2, 638, 3})[90], 2.0, 1e-3);
+}

@@ -292,8 +292,9 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const double fB = g.fB();
 	out.outcome = cv::Mat1b::zeros(H, W);
 	auto& stats = out.stats;
-	for (int v = half; v < H - half; v += m_options.pixelStride)
-		for (int u = half; u < W - half; u += m_options.pixelStride)
+	const int stride = m_options.pixelStride;
+	for (int v = half; v < H - half; v += stride)
+		for (int u = half; u < W - half; u += stride)
 		{
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
 			if (state != PixelState::Inconsistent && state != PixelState::Unmodelled) continue;
@@ -341,7 +342,23 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			out.points.push_back({static_cast<float>(u), static_cast<float>(v),
 								  static_cast<float>(disparity), m.score, p});
 			mark(SearchOutcome::Accepted, stats.accepted);
+			// The outermost grid columns' windows also cover the image's last
+			// columns, where no window fits: their match is the depth there
+			// too (rays at the image's edge would see nothing otherwise).
+			auto extendTo = [&](int ue) {
+				const Eigen::Vector3d edgeRay = Rc * Eigen::Vector3d(g.rayX(ue), g.rayY(v), 1.0);
+				const Eigen::Vector3d pe = C + (fB / disparity) * edgeRay;
+				if (band.contains(pe.z()))
+					out.points.push_back({static_cast<float>(ue), static_cast<float>(v),
+										  static_cast<float>(disparity), m.score, pe});
+			};
+			if (u - stride < half)
+				for (int ue = u - stride; ue >= std::max(0, u - half); ue -= stride) extendTo(ue);
+			if (u + stride > W - 1 - half)
+				for (int ue = u + stride; ue <= std::min(W - 1, u + half); ue += stride) extendTo(ue);
 		}
+	out.firstColumn = static_cast<float>(half - (half / stride) * stride);
+	out.lastColumn = static_cast<float>(half + ((W - 1 - 2 * half) / stride) * stride + (half / stride) * stride);
 	stats.disparitiesTested = full.forward.evaluations() + (coarse ? coarse->forward.evaluations() : 0);
 	return out;
 }

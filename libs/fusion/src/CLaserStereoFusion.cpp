@@ -171,7 +171,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 	});
 	r.fused = timed(r.times.fuse, [&] {
 		const ScanFusion fusion(m_options.fusion);
-		r.visualRanges = fusion.visualRanges(scan, r.search.points);
+		r.visualRanges = fusion.visualRanges(scan, r.search.points,
+			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)});
 		return ScanFusion::fuse(scan, r.visualRanges);
 	});
 	return r;

@@ -29,12 +29,16 @@ void ScanFusion::TOptions::saveToConfigFile(
 
 std::vector<float> ScanFusion::visualRanges(
 	const mrpt::obs::CObservation2DRangeScan& laser,
-	const std::vector<lvf::depth::VisualPoint>& points) const
+	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched) const
 {
 	struct Hit
 	{
 		float range;
 		float offset;  //!< bearing minus the bin's own bearing, in bin steps
+		bool atImageEdge;  //!< from the outermost searched columns
+	};
+	auto atImageEdge = [&](float u) {
+		return searched && (u - searched->first < searched->step || searched->last - u < searched->step);
 	};
 	const size_t n = laser.getScanSize();
 	std::vector<std::vector<Hit>> perBearing(n);
@@ -49,7 +53,7 @@ std::vector<float> ScanFusion::visualRanges(
 		const long i = std::lround(index);
 		if (i < 0 || i >= static_cast<long>(n)) continue;
 		perBearing[static_cast<size_t>(i)].push_back(
-			{static_cast<float>(std::hypot(s.x, s.y)), static_cast<float>(index - double(i))});
+			{static_cast<float>(std::hypot(s.x, s.y)), static_cast<float>(index - double(i)), atImageEdge(p.u)});
 	}
 	std::vector<float> out(n, std::numeric_limits<float>::infinity());
 	const size_t need = static_cast<size_t>(m_options.minPoints);
@@ -69,8 +73,10 @@ std::vector<float> ScanFusion::visualRanges(
 			// ...that also covers the bin's own bearing: at an obstacle's edge
 			// a bin may hold points from beside its ray, which the ray misses.
 			float lo = 1, hi = -1;
-			for (size_t j = k; j < end; j++) lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset);
-			if (lo > slack || hi < -slack) continue;
+			bool edge = false;
+			for (size_t j = k; j < end; j++)
+				lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset), edge |= hits[j].atImageEdge;
+			if (!edge && (lo > slack || hi < -slack)) continue;
 			// The range along the bin's own ray: on a slanted face the points
 			// differ in range with bearing, so look at those nearest the bin's
 			// bearing; of them the nearest, since a horizontal surface (a table

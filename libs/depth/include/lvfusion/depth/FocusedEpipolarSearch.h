@@ -119,6 +119,10 @@ class FocusedEpipolarSearch
 		DepthSearchStats stats;
 		/** SearchOutcome per left pixel, to see why nothing was found. */
 		cv::Mat1b outcome;
+		/** The outermost columns points can lie at: the first and last grid
+		 * columns' matches are extended to the image columns their windows
+		 * cover beyond them, where no window fits. */
+		float firstColumn = 0, lastColumn = 0;
 	};
 
 	FocusedEpipolarSearch() = default;

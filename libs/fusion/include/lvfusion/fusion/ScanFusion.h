@@ -14,6 +14,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <optional>
 #include <vector>
 
 namespace lvf::fusion
@@ -48,11 +49,21 @@ class ScanFusion
 	ScanFusion() = default;
 	explicit ScanFusion(const TOptions& options) : m_options(options) {}
 
+	/** The left-image columns where the search could match at all (a window
+	 * fits), and the grid step between searched columns [px]. */
+	struct SearchedColumns
+	{
+		float first = 0, last = 0, step = 1;
+	};
+
 	/** Per laser bearing, the robust visual range (+inf where vision found
-	 * nothing trustworthy). */
+	 * nothing trustworthy). With `searched`, a cluster that reaches the edge
+	 * of the searched columns need not straddle its bin's bearing: the ray
+	 * may leave the searched image there, and nothing beyond it is known. */
 	std::vector<float> visualRanges(
 		const mrpt::obs::CObservation2DRangeScan& laser,
-		const std::vector<lvf::depth::VisualPoint>& points) const;
+		const std::vector<lvf::depth::VisualPoint>& points,
+		std::optional<SearchedColumns> searched = std::nullopt) const;
 
 	/** The laser scan with each bearing shortened to the visual range where
 	 * that is nearer; label FUSED. */
