@@ -8,6 +8,7 @@
 
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -36,7 +37,8 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	};
 	const DisparitySet& set = q.set;
 	EpipolarScores& scores = coarse.forward;
-	scores.reset(uc, vc, coarse.leftMean(vc, uc), coarse.leftStd(vc, uc));
+	// (A flat coarse window would divide by zero; the full one has texture.)
+	scores.reset(uc, vc, coarse.leftMean(vc, uc), std::max(coarse.leftStd(vc, uc), 1e-3f));
 	const int context = std::max(2, m_options.peakContext / 2);
 	const int xFirst = static_cast<int>(std::ceil(coarseColumn(set[set.size() - 1].hi)));
 	const int xLast = static_cast<int>(std::floor(coarseColumn(set[0].lo)));
