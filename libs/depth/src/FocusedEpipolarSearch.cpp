@@ -186,7 +186,7 @@ bool FocusedEpipolarSearch::passesLocalTests(
 		const int coreHalf = m_options.coreWindow / 2;
 		const float core = windowNcc(full.left, full.right, q.u, q.v, bestX, coreHalf);
 		bool modelExplainsCore = false;
-		if (q.modelDisparity > 0)
+		if (q.modelDisparity > 0 && core >= m_options.coreAcceptNcc)
 		{
 			const int xModel = static_cast<int>(std::lround(q.column(q.modelDisparity)));
 			// Strictly better: the match's own column may be among these
