@@ -83,6 +83,36 @@ TEST(CHolonomicVfh, TpObstacleOnTheTargetSendsItRoundTheNearSide)
 	EXPECT_GT(no.desiredSpeed, 0.0);
 }
 
+TEST(CHolonomicVfh, TpObstacleBeyondTheTargetDoesNotBlockIt)
+{
+	// Paths within +-10 deg end at 0.2; the target straight ahead at 0.1,
+	// before them: the window ends at 0.1 + 0.025, no cell is in it, and the
+	// robot heads for the target (before the cut: the sectors within 12.5
+	// deg blocked, steered off to +-57.5 deg, and near targets in rooms
+	// circled, every sector with a wall within ref_distance being blocked).
+	CHolonomicVFH vfh;
+	CHolonomicVFH::NavOutput no;
+	vfh.navigate(input(0.2, 10.0, {0.1, 0}), no);
+	EXPECT_NEAR(RAD2DEG(no.desiredDirection), 0.0, 1e-9);
+	const auto log = logOf(input(0.2, 10.0, {0.1, 0}));
+	ASSERT_TRUE(log);
+	for (double h : log->primaryHistogram) EXPECT_EQ(h, 0.0);
+	// The same obstacles 0.02 behind the target are within its safety
+	// distance: they still count.
+	const auto near = logOf(input(0.12, 10.0, {0.1, 0}));
+	ASSERT_TRUE(near);
+	EXPECT_GT(near->primaryHistogram[36], 0.0);
+}
+
+TEST(CHolonomicVfh, TpObstacleCellsStopAtTheHorizon)
+{
+	const auto ni = input(0.2, 10.0, {0.8, 0});
+	const size_t blocked = CHolonomicVFH::tpObstacleCells(ni).size();
+	EXPECT_GT(blocked, 0u);
+	EXPECT_EQ(CHolonomicVFH::tpObstacleCells(ni, 0.21).size(), blocked);
+	EXPECT_EQ(CHolonomicVFH::tpObstacleCells(ni, 0.2).size(), 0u) << "a cell at the horizon is outside";
+}
+
 TEST(CHolonomicVfh, SlowsDownNearTheTarget)
 {
 	CHolonomicVFH vfh;

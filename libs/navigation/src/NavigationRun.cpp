@@ -1,6 +1,7 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <lvfusion/navigation/GlobalGuidance.h>
+#include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
 #include <lvfusion/navigation/NavigatorConfig.h>
 #include <lvfusion/navigation/SimulatedRobotInterface.h>
@@ -143,7 +144,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 		goal.target.target_coords = mrpt::math::TPose2D(p.x, p.y, 0);
 		goal.target.targetAllowedDistance = float(loop.targetTolerance);
 		goal.target.targetIsIntermediaryWaypoint = !isTarget;
-		if (!isTarget) goal.target.targetDesiredRelSpeed = 1.0;
+		if (!isTarget) goal.target.targetDesiredRelSpeed = subgoalRelativeSpeed(setup.method);
 		navigator.navigate(&goal);
 		subgoal = p;
 		subgoalIsTarget = isTarget;

@@ -28,7 +28,8 @@
 //    TP-space moves with the robot, so the mu3 term is an approximation;
 //  - the hysteresis compares sectors of successive robot frames likewise;
 //  - the active window is, by default, the whole TP-space (TOptions says
-//    why);
+//    why), cut at the target's TP distance + safety_distance: beyond the
+//    target a trajectory's obstacle does not keep the robot from it;
 //  - speed: VFH's law, times a linear slow-down near the target (as MRPT's
 //    VFF); zero when every direction is blocked.
 // One method object exists per PTG, so each keeps its own VFH+ state.
@@ -86,9 +87,10 @@ class CHolonomicVFH : public mrpt::nav::CAbstractHolonomicReactiveMethod
 		options.targetSlowApproachingDistance = dist;
 	}
 
-	/** The adapter's cells: each TP-obstacle nearer than maxObstacleDist as
-	 * a certain cell, lengths in fractions of maxObstacleDist. */
-	static std::vector<ObstacleCell> tpObstacleCells(const NavInput& ni);
+	/** The adapter's cells: each TP-obstacle nearer than maxObstacleDist
+	 * and than `horizon` (a fraction of it) as a certain cell, lengths in
+	 * fractions of maxObstacleDist. */
+	static std::vector<ObstacleCell> tpObstacleCells(const NavInput& ni, double horizon = 1.0);
 
    private:
 	/** The engine, rebuilt whenever `options.vfh` changed since. */
