@@ -113,6 +113,25 @@ TEST(CHolonomicVfh, TpObstacleCellsStopAtTheHorizon)
 	EXPECT_EQ(CHolonomicVFH::tpObstacleCells(ni, 0.2).size(), 0u) << "a cell at the horizon is outside";
 }
 
+TEST(CHolonomicVfh, NarrowGapIsTakenWithAHalvedSafetyDistance)
+{
+	// Everything at 0.06 but the paths within +-15 deg (free): the nearest
+	// blocked paths, at +-17.85 deg, enlarged by asin(0.025/0.06) = 24.6 deg
+	// close the gap; with half the safety distance (12.0 deg) they block
+	// down to +-5.85 deg, and the sectors centred at +-2.5 deg are free.
+	auto ni = input(1.0, 0, {0.8, 0});
+	for (size_t i = 0; i < kPaths; i++)
+		if (std::abs(pathAngleDeg(i)) > 15.0) ni.obstacles[i] = 0.06;
+	CHolonomicVFH vfh;
+	CHolonomicVFH::NavOutput no;
+	vfh.navigate(ni, no);
+	EXPECT_NEAR(RAD2DEG(no.desiredDirection), 0.0, 2.5 + 1e-9);
+	EXPECT_GT(no.desiredSpeed, 0.0);
+	vfh.options.safetyFallback = false;
+	vfh.navigate(ni, no);
+	EXPECT_EQ(no.desiredSpeed, 0.0) << "VFH+ alone finds no valley";
+}
+
 TEST(CHolonomicVfh, SlowsDownNearTheTarget)
 {
 	CHolonomicVFH vfh;

@@ -27,6 +27,7 @@ void CHolonomicVFH::TOptions::loadFromConfigFile(
 	vfh.load(ini, false);
 	targetSlowApproachingDistance = ini.real(
 		"target_slow_approaching_distance", targetSlowApproachingDistance, 0, 1e6);
+	safetyFallback = ini.flag("safety_fallback", safetyFallback);
 	ini.rejectUnknownKeys();
 }
 
@@ -37,6 +38,9 @@ void CHolonomicVFH::TOptions::saveToConfigFile(
 	lvf::common::writeOption(
 		c, section, "target_slow_approaching_distance", targetSlowApproachingDistance,
 		"slow down linearly when the target is nearer than this [fraction of ref_distance]");
+	lvf::common::writeOption(
+		c, section, "safety_fallback", safetyFallback,
+		"no valley: retry with half the safety distance, then a quarter, before stopping (true/false)");
 }
 
 CHolonomicVFH::CHolonomicVFH(const mrpt::config::CConfigFileBase* ini)
@@ -48,7 +52,7 @@ CHolonomicVFH::CHolonomicVFH(const mrpt::config::CConfigFileBase* ini)
 void CHolonomicVFH::initialize(const mrpt::config::CConfigFileBase& ini)
 {
 	options.loadFromConfigFile(ini, getConfigFileSectionName());
-	m_engine.reset();
+	for (auto& e : m_engines) e.reset();
 }
 
 void CHolonomicVFH::saveConfigFile(mrpt::config::CConfigFileBase& c) const
@@ -56,11 +60,15 @@ void CHolonomicVFH::saveConfigFile(mrpt::config::CConfigFileBase& c) const
 	options.saveToConfigFile(c, getConfigFileSectionName());
 }
 
-VfhPlus& CHolonomicVFH::engine()
+VfhPlus& CHolonomicVFH::engine(size_t level)
 {
-	if (!m_engine || !(m_engine->parameters() == options.vfh))
-		m_engine = std::make_unique<VfhPlus>(options.vfh);
-	return *m_engine;
+	VfhParameters p = options.vfh;
+	// Levels: the safety distance, half of it, a quarter (not none:
+	// measured, dropping it brushed a floating box in the box room).
+	p.safetyDistance = std::ldexp(p.safetyDistance, -int(level));
+	auto& e = m_engines.at(level);
+	if (!e || !(e->parameters() == p)) e = std::make_unique<VfhPlus>(p);
+	return *e;
 }
 
 namespace
@@ -111,7 +119,6 @@ void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
 	ASSERT_(!ni.obstacles.empty());
 	ASSERT_(!ni.targets.empty());
 	ASSERT_GT_(ni.maxObstacleDist, 0);
-	VfhPlus& vfh = engine();
 	// MRPT: "if many, last targets have higher priority".
 	const mrpt::math::TPoint2D target = ni.targets.back() * (1.0 / ni.maxObstacleDist);
 	// A TP-obstacle is a whole trajectory's free length, and one such cell
@@ -125,8 +132,24 @@ void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
 	const std::vector<ObstacleCell> cells = tpObstacleCells(ni, horizon);
 	const double targetDirection = std::atan2(target.y, target.x);
 
-	const double previous = vfh.previousDirection().value_or(0.0);
-	const VfhPlus::Result r = vfh.step(cells, targetDirection, 0.0);
+	// In a gap narrower than the enlarged obstacles every sector is blocked
+	// and VFH+ stops, for good: nothing changes while the robot stands
+	// (measured: the box room, 72 of 72 sectors blocked between two boxes
+	// the planned path passes). As the guidance's clearance, the safety
+	// distance is then halved, and halved again; the TP distances remain
+	// collision distances of the robot's shape, and MRPT's navigator slows
+	// down near obstacles along the chosen trajectory.
+	const size_t levels = options.safetyFallback ? kSafetyLevels : 1;
+	VfhPlus* used = nullptr;
+	VfhPlus::Result r;
+	double previous = 0;
+	for (size_t level = 0; level < levels && !r.found; level++)
+	{
+		used = &engine(level);
+		previous = used->previousDirection().value_or(0.0);
+		r = used->step(cells, targetDirection, 0.0);
+	}
+	const VfhPlus& vfh = *used;
 	no.desiredDirection = r.found ? r.direction : 0.0;
 	double speed = r.found ? r.speedFactor : 0.0;
 	if (m_enableApproachTargetSlowDown && options.targetSlowApproachingDistance > 0)
@@ -171,7 +194,7 @@ void CHolonomicVFH::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
 			std::string text;
 			in >> text;
 			options.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "CHolonomicVFH");
-			m_engine.reset();
+			for (auto& e : m_engines) e.reset();
 			break;
 		}
 		default: MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
