@@ -42,6 +42,9 @@ TEST_F(LvfNavigateCli, BadInputIsOneLineAndWritesNothing)
 	expectBadInput("--batch 2 --room-kind attic", "--room-kind");
 	const auto bad = write("bad.ini", "[NavigationLoop]\ncontrol_period = 0.1\nno_such_key = 1\n");
 	expectBadInput("--config '" + bad.string() + "'", "no_such_key");
+	// MRPT's navigator reads this section itself: checked before it does.
+	const auto badVfh = write("badvfh.ini", "[CHolonomicVFH]\nsafety_fallback = maybe\n");
+	expectBadInput("--config '" + badVfh.string() + "'", "badvfh.ini: [CHolonomicVFH] safety_fallback");
 	const auto noTarget = write("nt.yaml", "name: nt\npath: {poses: [[0, 0, 0]]}\nboxes: []\n");
 	expectBadInput("--world '" + noTarget.string() + "'", "target");
 }

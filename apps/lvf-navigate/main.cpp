@@ -7,6 +7,7 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/vfh/CHolonomicVFH.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
@@ -234,6 +235,12 @@ int run(int argc, char** argv)
 	const auto navConfig = lvf::common::openIniFile(argConfig.getValue());
 	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
 	setup.navigatorConfig = readText(argConfig.getValue());
+	{
+		// MRPT's navigator loads [CHolonomicVFH] itself and turns a bad key
+		// into an internal error: check the section here, naming the file.
+		lvf::vfh::CHolonomicVFH::TOptions vfh;
+		loadOwnSections(vfh, "CHolonomicVFH", *navConfig, argConfig.getValue());
+	}
 	if (argTimeout.isSet())
 	{
 		if (!(argTimeout.getValue() > 0)) throw InputError("--timeout", "", "must be > 0");
