@@ -4,6 +4,7 @@
 // every output the issue lists, the rawlog readable by MRPT's tools.
 
 #include "CliTestSupport.h"
+#include "TestWorlds.h"
 
 using lvf::test::CliTest;
 using lvf::test::RunResult;
@@ -41,6 +42,9 @@ TEST_F(LvfNavigateCli, BadInputIsOneLineAndWritesNothing)
 	expectBadInput("--batch 2 --room-kind attic", "--room-kind");
 	const auto bad = write("bad.ini", "[NavigationLoop]\ncontrol_period = 0.1\nno_such_key = 1\n");
 	expectBadInput("--config '" + bad.string() + "'", "no_such_key");
+	// MRPT's navigator reads this section itself: checked before it does.
+	const auto badVfh = write("badvfh.ini", "[CHolonomicVFH]\nsafety_fallback = maybe\n");
+	expectBadInput("--config '" + badVfh.string() + "'", "badvfh.ini: [CHolonomicVFH] safety_fallback");
 	const auto noTarget = write("nt.yaml", "name: nt\npath: {poses: [[0, 0, 0]]}\nboxes: []\n");
 	expectBadInput("--world '" + noTarget.string() + "'", "target");
 }
@@ -86,4 +90,56 @@ TEST_F(LvfNavigateCli, LaserOnlyBoxRoomRunWritesEveryOutput)
 	ASSERT_EQ(counts.count("FUSED"), 1u) << info.out;
 	EXPECT_GT(counts.at("FUSED"), 5);
 	EXPECT_EQ(counts.size(), 2u) << info.out;  // no stereo in a laser-only run
+}
+
+TEST_F(LvfNavigateCli, DumpConfigIsCompleteAndReadsBack)
+{
+	const auto r = navigate("--dump-config");
+	ASSERT_EQ(r.status, 0) << r.err;
+	// Every [NavigationLoop] key of the shipped file, MRPT's navigator
+	// sections with keys the shipped file leaves to MRPT's defaults, every
+	// registered holonomic method, the PTGs, the simulator and the fusion.
+	for (const char* key :
+		 {"[NavigationLoop]", "global_guidance", "guidance_lookahead", "unreachable_after", "turn_in_place_above_deg",
+		  "[CAbstractPTGBasedReactive]", "speedfilter_tau", "[CHolonomicVFH]", "[CHolonomicFullEval]",
+		  "[CHolonomicVFF]", "[CHolonomicND]", "PTG2_Type", "[CStereoLaserSimulator]", "[SimulatedStereoRig]",
+		  "[CLaserStereoFusion]", "[FocusedEpipolarSearch]"})
+		EXPECT_NE(r.out.find(key), std::string::npos) << key;
+	for (const auto& line : lvf::test::keyLines(lvf::test::slurp(std::string(LVF_SHARE_DIR) + "/config/navigate.ini")))
+	{
+		if (line[0] == '[') continue;
+		const std::string key = line.substr(0, line.find_first_of(" =\t"));
+		EXPECT_NE(r.out.find("\n" + key + " "), std::string::npos) << key;
+	}
+	// It reads back as --config, values changed in it are used.
+	const auto dump = write("dump.ini", r.out);
+	EXPECT_EQ(navigate("--config '" + dump.string() + "' --dump-config").out, r.out);
+	std::string edited = r.out;
+	const std::string from = "global_guidance              =  true", to = "global_guidance              =  false";
+	ASSERT_NE(edited.find(from), std::string::npos);
+	edited.replace(edited.find(from), from.size(), to);
+	const auto tilt = edited.find("tilt_deg                     =  15.000000");
+	ASSERT_NE(tilt, std::string::npos);
+	edited.replace(tilt, 41, "tilt_deg                     =  20.000000");
+	const auto editedIni = write("edited.ini", edited);
+	const auto again = navigate("--config '" + editedIni.string() + "' --dump-config --method CHolonomicVFH").out;
+	EXPECT_NE(again.find(to), std::string::npos);
+	EXPECT_NE(again.find("tilt_deg                     =  20.000000"), std::string::npos);
+	EXPECT_NE(again.find("holonomic_method = CHolonomicVFH"), std::string::npos);
+	// A bad key in one of the simulator's sections of it names the file.
+	const auto badSim = write("badsim.ini", r.out + "\n[SimulatedLaser]\nno_such_key = 1\n");
+	expectBadInput("--config '" + badSim.string() + "'", "badsim.ini: [SimulatedLaser] no_such_key");
+}
+
+TEST_F(LvfNavigateCli, UnreachableTargetIsReportedAsSuch)
+{
+	// A closed, empty 6 x 6 m room and a target 3 m beyond its east wall:
+	// once the robot has seen the walls all round, guidance finds no way
+	// (exit status 3: ran, not reached).
+	const auto world = write("closed.yaml", lvf::test::roomWorld("") + "target: [8, 0]\n");
+	const auto r = navigate("--world '" + world.string() + "' --sensing laser --timeout 60 -q -o out");
+	EXPECT_EQ(r.status, 3) << r.out << r.err;
+	EXPECT_NE(r.out.find("outcome=unreachable"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("collisions=0"), std::string::npos) << r.out;
+	EXPECT_NE(lvf::test::slurp(m_dir / "out" / "room_metrics.txt").find("the target is unreachable"), std::string::npos);
 }

@@ -83,6 +83,55 @@ TEST(CHolonomicVfh, TpObstacleOnTheTargetSendsItRoundTheNearSide)
 	EXPECT_GT(no.desiredSpeed, 0.0);
 }
 
+TEST(CHolonomicVfh, TpObstacleBeyondTheTargetDoesNotBlockIt)
+{
+	// Paths within +-10 deg end at 0.2; the target straight ahead at 0.1,
+	// before them: the window ends at 0.1 + 0.025, no cell is in it, and the
+	// robot heads for the target (before the cut: the sectors within 12.5
+	// deg blocked, steered off to +-57.5 deg, and near targets in rooms
+	// circled, every sector with a wall within ref_distance being blocked).
+	CHolonomicVFH vfh;
+	CHolonomicVFH::NavOutput no;
+	vfh.navigate(input(0.2, 10.0, {0.1, 0}), no);
+	EXPECT_NEAR(RAD2DEG(no.desiredDirection), 0.0, 1e-9);
+	const auto log = logOf(input(0.2, 10.0, {0.1, 0}));
+	ASSERT_TRUE(log);
+	for (double h : log->primaryHistogram) EXPECT_EQ(h, 0.0);
+	// The same obstacles 0.02 behind the target are within its safety
+	// distance: they still count.
+	const auto near = logOf(input(0.12, 10.0, {0.1, 0}));
+	ASSERT_TRUE(near);
+	EXPECT_GT(near->primaryHistogram[36], 0.0);
+}
+
+TEST(CHolonomicVfh, TpObstacleCellsStopAtTheHorizon)
+{
+	const auto ni = input(0.2, 10.0, {0.8, 0});
+	const size_t blocked = CHolonomicVFH::tpObstacleCells(ni).size();
+	EXPECT_GT(blocked, 0u);
+	EXPECT_EQ(CHolonomicVFH::tpObstacleCells(ni, 0.21).size(), blocked);
+	EXPECT_EQ(CHolonomicVFH::tpObstacleCells(ni, 0.2).size(), 0u) << "a cell at the horizon is outside";
+}
+
+TEST(CHolonomicVfh, NarrowGapIsTakenWithAHalvedSafetyDistance)
+{
+	// Everything at 0.06 but the paths within +-15 deg (free): the nearest
+	// blocked paths, at +-17.85 deg, enlarged by asin(0.025/0.06) = 24.6 deg
+	// close the gap; with half the safety distance (12.0 deg) they block
+	// down to +-5.85 deg, and the sectors centred at +-2.5 deg are free.
+	auto ni = input(1.0, 0, {0.8, 0});
+	for (size_t i = 0; i < kPaths; i++)
+		if (std::abs(pathAngleDeg(i)) > 15.0) ni.obstacles[i] = 0.06;
+	CHolonomicVFH vfh;
+	CHolonomicVFH::NavOutput no;
+	vfh.navigate(ni, no);
+	EXPECT_NEAR(RAD2DEG(no.desiredDirection), 0.0, 2.5 + 1e-9);
+	EXPECT_GT(no.desiredSpeed, 0.0);
+	vfh.options.safetyFallback = false;
+	vfh.navigate(ni, no);
+	EXPECT_EQ(no.desiredSpeed, 0.0) << "VFH+ alone finds no valley";
+}
+
 TEST(CHolonomicVfh, SlowsDownNearTheTarget)
 {
 	CHolonomicVFH vfh;

@@ -39,6 +39,10 @@ void writeTrajectoryImage(
 					cv::rectangle(canvas, cell & cv::Rect(0, 0, canvas.cols, rows), color, cv::FILLED);
 				}
 	}
+	// The last global-guidance plan, thin violet, under the driven path.
+	std::vector<cv::Point> plan;
+	for (const auto& p : run.plannedPath) plan.push_back(px(p.x, p.y));
+	if (plan.size() > 1) cv::polylines(canvas, plan, false, cv::Scalar(200, 0, 200), 1, cv::LINE_AA);
 	const auto& m = run.metrics;
 	std::vector<cv::Point> line;
 	for (const auto& p : m.trajectory) line.push_back(px(p.x, p.y));

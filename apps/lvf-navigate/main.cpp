@@ -7,14 +7,17 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/vfh/CHolonomicVFH.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
+#include <lvfusion/navigation/NavigatorConfig.h>
 #include <lvfusion/navigation/RandomScenario.h>
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/string_utils.h>
 
 #include <cmath>
@@ -31,6 +34,48 @@ namespace
 const std::string kApp = "lvf-navigate";
 const std::string kDefaultConfig = std::string(LVF_SHARE_DIR) + "/config/navigate.ini";
 const std::string kDefaultWorld = std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml";
+const std::string kSensorsSection = "CStereoLaserSimulator", kFusionSection = "CLaserStereoFusion";
+
+/** Loads `options` from the sections of `file` it owns (the ones its
+ * saveToConfigFile writes): the simulator's and the fusion's loaders refuse
+ * sections they do not know, and a navigation INI has MRPT's too. */
+template <class Options>
+void loadOwnSections(Options& options, const std::string& section, const mrpt::config::CConfigFileBase& file, const std::string& path)
+{
+	mrpt::config::CConfigFileMemory defaults, own;
+	options.saveToConfigFile(defaults, section);
+	std::vector<std::string> sections, keys;
+	defaults.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		file.getAllKeys(s, keys);
+		for (const auto& k : keys) own.write(s, k, file.read_string(s, k, ""));
+	}
+	try
+	{
+		options.loadFromConfigFile(own, section);
+	}
+	catch (const InputError& e)	 // it names "<memory>": name the file instead
+	{
+		const std::string what = e.what(), memory = "<memory>: ";
+		throw InputError(path, "", what.rfind(memory, 0) == 0 ? what.substr(memory.size()) : what);
+	}
+}
+
+/** --dump-config: everything a run uses, as one INI that reads back as --config. */
+std::string dumpConfig(const nav::NavigationSetup& setup)
+{
+	mrpt::config::CConfigFileMemory out(nav::completeNavigatorConfig(setup.navigatorConfig, setup.method));
+	setup.loop.saveToConfigFile(out, "NavigationLoop");
+	setup.sensors.saveToConfigFile(out, kSensorsSection);
+	setup.fusion.saveToConfigFile(out, kFusionSection);
+	return "# lvf-navigate --dump-config: the complete configuration of a run.\n"
+		   "# [NavigationLoop] is lvf-navigate's (units in the comments); [" + kSensorsSection + "] the\n"
+		   "# simulator's, [" + kFusionSection + "] the fusion's; every other section is MRPT's\n"
+		   "# reactive navigator's, as MRPT 2.5 writes it (the robot shape is replaced at run time\n"
+		   "# by the world's cylinder). Use it as --config.\n" +
+		out.getContent();
+}
 
 std::vector<std::string> splitList(const std::string& text)
 {
@@ -174,14 +219,15 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argMethods("", "methods", "With --batch: comma list of holonomic methods (default: --method)", false, "", "A,B", cmd);
 	TCLAP::ValueArg<std::string> argSensing("s", "sensing", "fused (laser + stereo, default) or laser; with --batch a comma list", false, "fused", "MODE", cmd);
 	TCLAP::ValueArg<std::string> argConfig("c", "config", "Navigation INI: [NavigationLoop] plus MRPT's reactive navigator sections (default: " + kDefaultConfig + ")", false, kDefaultConfig, "FILE.ini", cmd);
-	TCLAP::ValueArg<std::string> argSensors("", "sensors-config", "Simulator INI (default: built-in, see sensors.ini)", false, "", "FILE.ini", cmd);
-	TCLAP::ValueArg<std::string> argFusion("", "fusion-config", "Fusion INI (default: built-in, see fusion.ini)", false, "", "FILE.ini", cmd);
+	TCLAP::ValueArg<std::string> argSensors("", "sensors-config", "Simulator INI, section [CStereoLaserSimulator] (default: that section of --config if it has one, else built-in, see sensors.ini)", false, "", "FILE.ini", cmd);
+	TCLAP::ValueArg<std::string> argFusion("", "fusion-config", "Fusion INI, section [CLaserStereoFusion] (default: that section of --config if it has one, else built-in, see fusion.ini)", false, "", "FILE.ini", cmd);
 	TCLAP::ValueArg<std::string> argStart("", "start", "Start pose instead of the world's first path pose", false, "", "X,Y,DEG", cmd);
 	TCLAP::ValueArg<std::string> argTarget("", "target", "Target instead of the world's", false, "", "X,Y", cmd);
 	TCLAP::ValueArg<double> argTimeout("", "timeout", "Simulated seconds before giving up (default: [NavigationLoop] timeout)", false, 0, "S", cmd);
 	TCLAP::ValueArg<int> argBatch("b", "batch", "Run N random rooms per room kind", false, 0, "N", cmd);
 	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out", "DIR", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print only the metrics line (or table) and errors", cmd);
+	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration ([NavigationLoop], every MRPT navigator section and key, the simulator's and the fusion's sections; defaults overridden by --config, --sensors-config, --fusion-config, --method) and exit; it reads back as --config", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
 
 	lvf::registerAllClasses();
@@ -189,20 +235,37 @@ int run(int argc, char** argv)
 	const auto navConfig = lvf::common::openIniFile(argConfig.getValue());
 	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
 	setup.navigatorConfig = readText(argConfig.getValue());
+	{
+		// MRPT's navigator loads [CHolonomicVFH] itself and turns a bad key
+		// into an internal error: check the section here, naming the file.
+		lvf::vfh::CHolonomicVFH::TOptions vfh;
+		loadOwnSections(vfh, "CHolonomicVFH", *navConfig, argConfig.getValue());
+	}
 	if (argTimeout.isSet())
 	{
 		if (!(argTimeout.getValue() > 0)) throw InputError("--timeout", "", "must be > 0");
 		setup.loop.timeout = argTimeout.getValue();
 	}
+	// The simulator's and the fusion's sections: from their own files if
+	// given, else from --config if it has them (as --dump-config writes).
 	if (!argSensors.getValue().empty())
-		setup.sensors.loadFromConfigFile(*lvf::common::openIniFile(argSensors.getValue()), "CStereoLaserSimulator");
+		setup.sensors.loadFromConfigFile(*lvf::common::openIniFile(argSensors.getValue()), kSensorsSection);
+	else if (navConfig->sectionExists(kSensorsSection))
+		loadOwnSections(setup.sensors, kSensorsSection, *navConfig, argConfig.getValue());
 	if (!argFusion.getValue().empty())
-		setup.fusion.loadFromConfigFile(*lvf::common::openIniFile(argFusion.getValue()), "CLaserStereoFusion");
+		setup.fusion.loadFromConfigFile(*lvf::common::openIniFile(argFusion.getValue()), kFusionSection);
+	else if (navConfig->sectionExists(kFusionSection))
+		loadOwnSections(setup.fusion, kFusionSection, *navConfig, argConfig.getValue());
 	const std::string method = argMethod.getValue().empty()
 		? navConfig->read_string("CAbstractPTGBasedReactive", "holonomic_method", "CHolonomicND")
 		: argMethod.getValue();
 	nav::requireHolonomicMethod(method, argMethod.getValue().empty() ? argConfig.getValue() : "--method");
 	setup.method = method;
+	if (argDumpConfig.getValue())
+	{
+		std::cout << dumpConfig(setup);
+		return lvf::common::kExitOk;
+	}
 
 	std::vector<nav::Sensing> sensings;
 	for (const auto& s : splitList(argSensing.getValue())) sensings.push_back(nav::parseSensing(s, "--sensing"));

@@ -1,6 +1,7 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
 #include <mrpt/nav/holonomic/CAbstractHolonomicReactiveMethod.h>
+#include <mrpt/nav/reactive/CAbstractNavigator.h>
 #include <mrpt/rtti/CObject.h>
 
 #include <algorithm>
@@ -33,6 +34,12 @@ void requireHolonomicMethod(const std::string& name, const std::string& source)
 	for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
 	throw lvf::common::InputError(
 		source, "", "'" + name + "' is not a registered holonomic method (registered: " + list + ")");
+}
+
+double subgoalRelativeSpeed(const std::string& name)
+{
+	if (name == "CHolonomicVFF") return mrpt::nav::CAbstractNavigator::TargetInfo().targetDesiredRelSpeed;
+	return 1.0;
 }
 
 }  // namespace lvf::navigation

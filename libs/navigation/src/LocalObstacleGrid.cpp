@@ -1,5 +1,6 @@
 #include <lvfusion/navigation/LocalObstacleGrid.h>
 #include <mrpt/poses/CPose3D.h>
+#include <algorithm>
 
 namespace lvf::navigation
 {
@@ -29,6 +30,15 @@ void LocalObstacleGrid::insertVision(
 bool LocalObstacleGrid::obstacle(int cx, int cy) const
 {
 	return m_laser.getCell(cx, cy) < m_occupiedBelow || m_vision.getCell(cx, cy) < m_occupiedBelow;
+}
+
+mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMap() const
+{
+	mrpt::maps::COccupancyGridMap2D out = m_laser;
+	for (unsigned cy = 0; cy < m_laser.getSizeY(); cy++)
+		for (unsigned cx = 0; cx < m_laser.getSizeX(); cx++)
+			out.setCell(int(cx), int(cy), std::min(m_laser.getCell(int(cx), int(cy)), m_vision.getCell(int(cx), int(cy))));
+	return out;
 }
 
 void LocalObstacleGrid::obstaclesNear(

@@ -16,6 +16,13 @@ void NavigationLoopOptions::loadFromConfigFile(
 	gridResolution = ini.real("grid_resolution", gridResolution, 0.01, 1);
 	obstacleRange = ini.real("obstacle_range", obstacleRange, 0.1, 100);
 	occupiedBelow = ini.real("occupied_below", occupiedBelow, 0.01, 0.99);
+	globalGuidance = ini.flag("global_guidance", globalGuidance);
+	guidancePeriod = ini.real("guidance_period", guidancePeriod, 1e-3, 1e6);
+	guidanceLookahead = ini.real("guidance_lookahead", guidanceLookahead, 0.1, 100);
+	guidanceClearance = ini.real("guidance_clearance", guidanceClearance, 0, 10);
+	unreachableAfter = ini.real("unreachable_after", unreachableAfter, 0, 1e6);
+	turnInPlaceAboveDeg = ini.real("turn_in_place_above_deg", turnInPlaceAboveDeg, 30, 180);
+	turnRateDegps = ini.real("turn_rate_degps", turnRateDegps, 1, 720);
 	ini.rejectUnknownKeys();
 }
 
@@ -29,6 +36,13 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "grid_resolution", gridResolution, "local occupancy grid cell size [m]");
 	writeOption(c, s, "obstacle_range", obstacleRange, "occupied cells this near the robot are obstacles for the navigator [m]");
 	writeOption(c, s, "occupied_below", occupiedBelow, "a cell is occupied when its free probability is below this [0-1]");
+	writeOption(c, s, "global_guidance", globalGuidance, "plan by value iteration on the robot's grid and steer along the path (false: straight at the target)");
+	writeOption(c, s, "guidance_period", guidancePeriod, "replan this often, and whenever the subgoal is reached [s]");
+	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");
+	writeOption(c, s, "guidance_clearance", guidanceClearance, "the path keeps this much more than the robot radius off obstacles (retried with half, then 0, if no path) [m]");
+	writeOption(c, s, "unreachable_after", unreachableAfter, "no path on the grid for this long ends the run as unreachable [s]");
+	writeOption(c, s, "turn_in_place_above_deg", turnInPlaceAboveDeg, "with guidance: turn on the spot while the subgoal is more than this off the heading [deg]");
+	writeOption(c, s, "turn_rate_degps", turnRateDegps, "rate of that turn [deg/s]");
 }
 
 }  // namespace lvf::navigation

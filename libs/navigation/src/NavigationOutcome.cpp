@@ -11,6 +11,7 @@ const char* outcomeName(Outcome o)
 		case Outcome::Collision: return "collision";
 		case Outcome::Timeout: return "timeout";
 		case Outcome::NavigatorError: return "navigator-error";
+		case Outcome::Unreachable: return "unreachable";
 		case Outcome::StartInCollision: return "start-in-collision";
 		case Outcome::TargetInObstacle: return "target-in-obstacle";
 		case Outcome::InvalidPose: return "invalid-pose";
@@ -25,7 +26,8 @@ int outcomeExitStatus(Outcome o)
 		case Outcome::Reached: return 0;
 		case Outcome::Collision:
 		case Outcome::Timeout:
-		case Outcome::NavigatorError: return 3;
+		case Outcome::NavigatorError:
+		case Outcome::Unreachable: return 3;
 		default: return 4;
 	}
 }

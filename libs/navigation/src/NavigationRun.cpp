@@ -1,13 +1,19 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/metrics/ScanMetrics.h>
+#include <lvfusion/navigation/GlobalGuidance.h>
+#include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
+#include <lvfusion/navigation/NavigatorConfig.h>
 #include <lvfusion/navigation/SimulatedRobotInterface.h>
 #include <lvfusion/navigation/WorldCollision.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
 #include <mrpt/math/CPolygon.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
 #include <mrpt/system/CTicTac.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lvf::navigation
@@ -26,6 +32,9 @@ Sensing parseSensing(const std::string& name, const std::string& source)
 
 namespace
 {
+/** A turn in place ends when the subgoal is this near straight ahead [rad]. */
+constexpr double kTurnUntil = M_PI / 6;
+
 bool finite(const mrpt::math::TPose2D& p)
 {
 	return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.phi);
@@ -98,6 +107,13 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 
 	double xMin, xMax, yMin, yMax;
 	world.footprintBounds(xMin, xMax, yMin, yMax, 1.0);
+	// The grid holds the start and the target too: a target beyond the
+	// world's walls is still a cell the planner can find closed off.
+	for (const auto& p : {mrpt::math::TPoint2D(scenario.start), scenario.target})
+	{
+		xMin = std::min(xMin, p.x - 1.0), xMax = std::max(xMax, p.x + 1.0);
+		yMin = std::min(yMin, p.y - 1.0), yMax = std::max(yMax, p.y + 1.0);
+	}
 	run.grid = std::make_unique<LocalObstacleGrid>(
 		xMin, xMax, yMin, yMax, loop.gridResolution, loop.occupiedBelow);
 	CStereoLaserSimulator sim(world, setup.sensors);
@@ -110,11 +126,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 	mrpt::config::CConfigFileMemory config(setup.navigatorConfig);
 	config.write("CAbstractPTGBasedReactive", "holonomic_method", setup.method);
 	mrpt::nav::CReactiveNavigationSystem navigator(robot, false, false);
-	navigator.setMinLoggingLevel(mrpt::system::LVL_ERROR);
-	// MRPT offers only const access to this profiler, which otherwise prints
-	// its statistics to stdout when the navigator is destroyed; the object
-	// itself is not const, so the cast is well defined.
-	const_cast<mrpt::system::CTimeLogger&>(navigator.getDelaysTimeLogger()).enable(false);
+	quietNavigator(navigator);
 	navigator.setLogFileDirectory(setup.navigatorLogDir);
 	navigator.enableLogFile(!setup.navigatorLogDir.empty());
 	navigator.loadConfigFile(config);
@@ -123,10 +135,30 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 	navigator.changeRobotShape(robotShape(world.robot.radius));
 	navigator.initialize();
 
-	mrpt::nav::CAbstractNavigator::TNavigationParams goal;
-	goal.target.target_coords = mrpt::math::TPose2D(scenario.target.x, scenario.target.y, 0);
-	goal.target.targetAllowedDistance = float(loop.targetTolerance);
-	navigator.navigate(&goal);
+	// The navigator's target: the scenario's, or with global guidance a
+	// point of the planned path (an intermediary waypoint: no slowing down).
+	mrpt::math::TPoint2D subgoal = scenario.target;
+	bool subgoalIsTarget = true;
+	const auto steerAt = [&](const mrpt::math::TPoint2D& p, bool isTarget) {
+		mrpt::nav::CAbstractNavigator::TNavigationParams goal;
+		goal.target.target_coords = mrpt::math::TPose2D(p.x, p.y, 0);
+		goal.target.targetAllowedDistance = float(loop.targetTolerance);
+		goal.target.targetIsIntermediaryWaypoint = !isTarget;
+		if (!isTarget) goal.target.targetDesiredRelSpeed = subgoalRelativeSpeed(setup.method);
+		navigator.navigate(&goal);
+		subgoal = p;
+		subgoalIsTarget = isTarget;
+	};
+	const bool guided = loop.globalGuidance;
+	GuidanceOptions guidance;
+	guidance.robotRadius = world.robot.radius;
+	guidance.clearance = loop.guidanceClearance;
+	guidance.lookahead = loop.guidanceLookahead;
+	guidance.occupiedBelow = loop.occupiedBelow;
+	double nextPlanTime = 0;  // plan at the first step
+	double noPathSince = -1;  // <0: a path existed at the last plan
+	bool turning = false;  // turning in place towards the subgoal
+	if (!guided) steerAt(scenario.target, true);
 
 	const bool fused = setup.sensing == Sensing::Fused;
 	mrpt::math::TPose2D pose = scenario.start;
@@ -161,7 +193,50 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 				run.grid->insertVision(*inCameraView(*r.fused, *frame.stereo, setup.fusion), at);
 			if (setup.onSensing) setup.onSensing(frame, r);
 		}
-		navigator.navigationStep();
+		if (guided && m.time >= nextPlanTime - 1e-9)
+		{
+			nextPlanTime = m.time + loop.guidancePeriod;
+			const auto g = planGuidance(*run.grid, mrpt::math::TPoint2D(pose), scenario.target, guidance);
+			m.plans++;
+			if (g.status == Guidance::Status::Unreachable)
+			{
+				if (noPathSince < 0) noPathSince = m.time;
+				if (m.time - noPathSince >= loop.unreachableAfter - 1e-9)
+				{
+					m.outcome = Outcome::Unreachable;
+					m.finalDistance = std::hypot(pose.x - scenario.target.x, pose.y - scenario.target.y);
+					m.detail = mrpt::format(
+						"the target is unreachable: %s for %.1f s (at %.2f m from it after %.1f s)",
+						g.detail.c_str(), m.time - noPathSince, m.finalDistance, m.time);
+					break;
+				}
+				if (m.plans == 1) steerAt(scenario.target, true);  // nothing better yet
+			}
+			else
+			{
+				noPathSince = -1;
+				if (g.status == Guidance::Status::Path) steerAt(g.subgoal, g.subgoalIsTarget), run.plannedPath = g.path;
+				else steerAt(scenario.target, true);
+			}
+		}
+		// A subgoal behind the robot (the path turned back): MRPT's forward
+		// PTGs cannot turn in place and stall, or reverse blind; the robot
+		// turns on the spot until it faces the subgoal, then the navigator
+		// takes over again.
+		const double bearing = mrpt::math::wrapToPi(std::atan2(subgoal.y - pose.y, subgoal.x - pose.x) - pose.phi);
+		if (guided && std::abs(bearing) > (turning ? kTurnUntil : mrpt::DEG2RAD(loop.turnInPlaceAboveDeg)))
+		{
+			mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
+			cmd.ang_vel = std::copysign(mrpt::DEG2RAD(loop.turnRateDegps), bearing);
+			robot.changeSpeeds(cmd);
+			turning = true;
+		}
+		else
+		{
+			if (turning) steerAt(subgoal, subgoalIsTarget);	 // a fresh start from the new heading
+			turning = false;
+			navigator.navigationStep();
+		}
 		vehicle.simulateOneTimeStep(loop.controlPeriod);
 		cycleSeconds += timer.Tac();
 		m.cycles++;
@@ -199,7 +274,15 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 			break;
 		}
 		const auto state = navigator.getCurrentState();
-		if (state == mrpt::nav::CAbstractNavigator::NAV_ERROR || state == mrpt::nav::CAbstractNavigator::IDLE)
+		const bool stopped = state == mrpt::nav::CAbstractNavigator::NAV_ERROR || state == mrpt::nav::CAbstractNavigator::IDLE;
+		if (stopped && guided)
+		{
+			// A subgoal reached or given up on: plan again at the next step
+			// (the timeout still bounds the run).
+			if (state == mrpt::nav::CAbstractNavigator::NAV_ERROR) m.navigatorErrors++;
+			nextPlanTime = m.time;
+		}
+		else if (stopped)
 		{
 			m.outcome = Outcome::NavigatorError;
 			const auto& why = navigator.getErrorReason().error_msg;

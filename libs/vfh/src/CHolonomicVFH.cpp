@@ -27,6 +27,7 @@ void CHolonomicVFH::TOptions::loadFromConfigFile(
 	vfh.load(ini, false);
 	targetSlowApproachingDistance = ini.real(
 		"target_slow_approaching_distance", targetSlowApproachingDistance, 0, 1e6);
+	safetyFallback = ini.flag("safety_fallback", safetyFallback);
 	ini.rejectUnknownKeys();
 }
 
@@ -37,6 +38,9 @@ void CHolonomicVFH::TOptions::saveToConfigFile(
 	lvf::common::writeOption(
 		c, section, "target_slow_approaching_distance", targetSlowApproachingDistance,
 		"slow down linearly when the target is nearer than this [fraction of ref_distance]");
+	lvf::common::writeOption(
+		c, section, "safety_fallback", safetyFallback,
+		"no valley: retry with half the safety distance, then a quarter, before stopping (true/false)");
 }
 
 CHolonomicVFH::CHolonomicVFH(const mrpt::config::CConfigFileBase* ini)
@@ -48,7 +52,7 @@ CHolonomicVFH::CHolonomicVFH(const mrpt::config::CConfigFileBase* ini)
 void CHolonomicVFH::initialize(const mrpt::config::CConfigFileBase& ini)
 {
 	options.loadFromConfigFile(ini, getConfigFileSectionName());
-	m_engine.reset();
+	for (auto& e : m_engines) e.reset();
 }
 
 void CHolonomicVFH::saveConfigFile(mrpt::config::CConfigFileBase& c) const
@@ -56,11 +60,15 @@ void CHolonomicVFH::saveConfigFile(mrpt::config::CConfigFileBase& c) const
 	options.saveToConfigFile(c, getConfigFileSectionName());
 }
 
-VfhPlus& CHolonomicVFH::engine()
+VfhPlus& CHolonomicVFH::engine(size_t level)
 {
-	if (!m_engine || !(m_engine->parameters() == options.vfh))
-		m_engine = std::make_unique<VfhPlus>(options.vfh);
-	return *m_engine;
+	VfhParameters p = options.vfh;
+	// Levels: the safety distance, half of it, a quarter (not none:
+	// measured, dropping it brushed a floating box in the box room).
+	p.safetyDistance = std::ldexp(p.safetyDistance, -int(level));
+	auto& e = m_engines.at(level);
+	if (!e || !(e->parameters() == p)) e = std::make_unique<VfhPlus>(p);
+	return *e;
 }
 
 namespace
@@ -90,15 +98,16 @@ void fillDirectionCurves(
 }
 }  // namespace
 
-std::vector<ObstacleCell> CHolonomicVFH::tpObstacleCells(const NavInput& ni)
+std::vector<ObstacleCell> CHolonomicVFH::tpObstacleCells(const NavInput& ni, double horizon)
 {
 	const size_t n = ni.obstacles.size();
+	const double reach = std::min(1.0, horizon);
 	std::vector<ObstacleCell> cells;
 	cells.reserve(n);
 	for (size_t i = 0; i < n; i++)
 	{
 		const double d = ni.obstacles[i] / ni.maxObstacleDist;
-		if (!(d < 1.0)) continue;  // nothing seen along this trajectory
+		if (!(d < reach)) continue;  // nothing seen along this trajectory
 		const double a = -M_PI + (double(i) + 0.5) * 2 * M_PI / double(n);
 		cells.push_back({d * std::cos(a), d * std::sin(a), 1.0});
 	}
@@ -110,14 +119,37 @@ void CHolonomicVFH::navigate(const NavInput& ni, NavOutput& no)
 	ASSERT_(!ni.obstacles.empty());
 	ASSERT_(!ni.targets.empty());
 	ASSERT_GT_(ni.maxObstacleDist, 0);
-	VfhPlus& vfh = engine();
-	const std::vector<ObstacleCell> cells = tpObstacleCells(ni);
 	// MRPT: "if many, last targets have higher priority".
 	const mrpt::math::TPoint2D target = ni.targets.back() * (1.0 / ni.maxObstacleDist);
+	// A TP-obstacle is a whole trajectory's free length, and one such cell
+	// is denser than tau_high anywhere in the window: every direction with
+	// anything before ref_distance would be blocked (measured: 68 of 72
+	// sectors near a target in a 4 m room, the robot circling it). What lies
+	// beyond the target along a trajectory does not stop the robot getting
+	// there, so the window ends at the target (plus the safety distance, so
+	// that an obstacle right at the target still counts).
+	const double horizon = target.norm() + options.vfh.safetyDistance;
+	const std::vector<ObstacleCell> cells = tpObstacleCells(ni, horizon);
 	const double targetDirection = std::atan2(target.y, target.x);
 
-	const double previous = vfh.previousDirection().value_or(0.0);
-	const VfhPlus::Result r = vfh.step(cells, targetDirection, 0.0);
+	// In a gap narrower than the enlarged obstacles every sector is blocked
+	// and VFH+ stops, for good: nothing changes while the robot stands
+	// (measured: the box room, 72 of 72 sectors blocked between two boxes
+	// the planned path passes). As the guidance's clearance, the safety
+	// distance is then halved, and halved again; the TP distances remain
+	// collision distances of the robot's shape, and MRPT's navigator slows
+	// down near obstacles along the chosen trajectory.
+	const size_t levels = options.safetyFallback ? kSafetyLevels : 1;
+	VfhPlus* used = nullptr;
+	VfhPlus::Result r;
+	double previous = 0;
+	for (size_t level = 0; level < levels && !r.found; level++)
+	{
+		used = &engine(level);
+		previous = used->previousDirection().value_or(0.0);
+		r = used->step(cells, targetDirection, 0.0);
+	}
+	const VfhPlus& vfh = *used;
 	no.desiredDirection = r.found ? r.direction : 0.0;
 	double speed = r.found ? r.speedFactor : 0.0;
 	if (m_enableApproachTargetSlowDown && options.targetSlowApproachingDistance > 0)
@@ -162,7 +194,7 @@ void CHolonomicVFH::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ver
 			std::string text;
 			in >> text;
 			options.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "CHolonomicVFH");
-			m_engine.reset();
+			for (auto& e : m_engines) e.reset();
 			break;
 		}
 		default: MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);

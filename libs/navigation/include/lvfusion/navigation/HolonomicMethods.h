@@ -15,4 +15,14 @@ std::vector<std::string> registeredHolonomicMethods();
  * registered methods when `name` is not one of them. */
 void requireHolonomicMethod(const std::string& name, const std::string& source);
 
+/** The relative speed to ask of the navigator at an intermediary subgoal
+ * for method `name`: 1 (no slowing down on the way through), except for
+ * methods that need MRPT's approach slow-down switched on to move at all.
+ * MRPT 2.5 turns the slow-down off for targets with targetDesiredRelSpeed
+ * >= 0.11 (CAbstractPTGBasedReactive), and CHolonomicVFF then never sets
+ * NavOutput::desiredSpeed, which stays 0: measured, VFF never moved with
+ * guidance on. Its default rel speed (0.05) keeps the slow-down, which only
+ * acts within TARGET_SLOW_APPROACHING_DISTANCE of the subgoal. */
+double subgoalRelativeSpeed(const std::string& name);
+
 }  // namespace lvf::navigation

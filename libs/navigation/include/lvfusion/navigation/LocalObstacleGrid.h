@@ -37,6 +37,11 @@ class LocalObstacleGrid
 	void obstaclesNear(
 		const mrpt::poses::CPose2D& robot, double range, mrpt::maps::CSimplePointsMap& out) const;
 
+	/** Both grids in one, for planners: per cell the lower free
+	 * probability of the two, so a cell is an obstacle there (below
+	 * `occupiedBelow`) exactly when obstacle() says so. */
+	mrpt::maps::COccupancyGridMap2D obstacleMap() const;
+
 	/** Cell geometry (both grids share it). */
 	const mrpt::maps::COccupancyGridMap2D& geometry() const { return m_laser; }
 

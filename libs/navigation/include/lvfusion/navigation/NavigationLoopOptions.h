@@ -19,6 +19,20 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	 * (one laser hit takes a fresh cell to 0.35 with MRPT's defaults). */
 	double occupiedBelow = 0.45;
 
+	// Global guidance (GlobalGuidance.h): a value-iteration path on the
+	// robot's grid, the navigator steering at a point of it ahead.
+	bool globalGuidance = true;	 //!< off: the navigator steers at the target itself
+	double guidancePeriod = 1.0;  //!< replan this often [s] (and when the subgoal is reached)
+	double guidanceLookahead = 1.5;	 //!< the navigator's subgoal is this far along the path [m]
+	double guidanceClearance = 0.20;  //!< the path keeps this much more than the robot's radius off obstacles [m]
+	/** The run ends as "unreachable" when no path exists on the grid for
+	 * this long (a few replans: one bad view does not end a run) [s]. */
+	double unreachableAfter = 3.0;
+	/** With guidance, the robot turns on the spot while the subgoal is more
+	 * than this off its heading (MRPT's forward PTGs cannot) [deg]. */
+	double turnInPlaceAboveDeg = 90;
+	double turnRateDegps = 60;	//!< that turn's rate [deg/s]
+
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 	void saveToConfigFile(

@@ -15,6 +15,7 @@ enum class Outcome
 	Collision,	//!< the robot's body touched a solid of the world
 	Timeout,  //!< neither reached nor collided in the allotted time
 	NavigatorError,	 //!< the navigator gave up (e.g. target blocked)
+	Unreachable,  //!< no path to the target on the robot's grid (global guidance)
 	// Scenarios that cannot be run at all (checked before the first step):
 	StartInCollision,
 	TargetInObstacle,
@@ -39,6 +40,8 @@ struct NavigationMetrics
 	std::string minClearanceBox;  //!< the solid it was measured against
 	double meanCycleMs = 0;	 //!< wall time per control cycle incl. sensing
 	size_t cycles = 0, sensingUpdates = 0;
+	size_t plans = 0;  //!< global-guidance plans made
+	size_t navigatorErrors = 0;	 //!< NAV_ERRORs the guidance recovered from by replanning
 	std::vector<mrpt::math::TPose2D> trajectory;  //!< true poses, one per cycle
 
 	bool reached() const { return outcome == Outcome::Reached; }

@@ -64,6 +64,8 @@ struct NavigationRun
 	NavigationMetrics metrics;
 	/** The robot's grid at the end (null if the run never started). */
 	std::unique_ptr<LocalObstacleGrid> grid;
+	/** The last path global guidance planned (empty without guidance). */
+	std::vector<mrpt::math::TPoint2D> plannedPath;
 };
 
 /** Runs one scenario to its end. A scenario that cannot run (start in

@@ -28,15 +28,19 @@
 //    TP-space moves with the robot, so the mu3 term is an approximation;
 //  - the hysteresis compares sectors of successive robot frames likewise;
 //  - the active window is, by default, the whole TP-space (TOptions says
-//    why);
+//    why), cut at the target's TP distance + safety_distance: beyond the
+//    target a trajectory's obstacle does not keep the robot from it;
+//  - no valley: retried with half the safety distance, then a quarter
+//    (safety_fallback);
 //  - speed: VFH's law, times a linear slow-down near the target (as MRPT's
-//    VFF); zero when every direction is blocked.
+//    VFF); zero when every direction is blocked at every safety level.
 // One method object exists per PTG, so each keeps its own VFH+ state.
 
 #include <lvfusion/vfh/CLogFileRecord_VFH.h>
 #include <lvfusion/vfh/VfhPlus.h>
 #include <mrpt/nav/holonomic/CAbstractHolonomicReactiveMethod.h>
 
+#include <array>
 #include <memory>
 
 namespace lvf::vfh
@@ -61,6 +65,9 @@ class CHolonomicVFH : public mrpt::nav::CAbstractHolonomicReactiveMethod
 		/** Speed ramps down linearly when the target is nearer than this
 		 * [normalised distance] (as MRPT's VFF: 0.10). */
 		double targetSlowApproachingDistance = 0.10;
+		/** No valley: retry with half the safety distance, then a quarter, before
+		 * stopping (CHolonomicVFH.cpp says why). */
+		bool safetyFallback = true;
 
 		static VfhParameters tpSpaceDefaults();
 		void loadFromConfigFile(
@@ -86,14 +93,18 @@ class CHolonomicVFH : public mrpt::nav::CAbstractHolonomicReactiveMethod
 		options.targetSlowApproachingDistance = dist;
 	}
 
-	/** The adapter's cells: each TP-obstacle nearer than maxObstacleDist as
-	 * a certain cell, lengths in fractions of maxObstacleDist. */
-	static std::vector<ObstacleCell> tpObstacleCells(const NavInput& ni);
+	/** The adapter's cells: each TP-obstacle nearer than maxObstacleDist
+	 * and than `horizon` (a fraction of it) as a certain cell, lengths in
+	 * fractions of maxObstacleDist. */
+	static std::vector<ObstacleCell> tpObstacleCells(const NavInput& ni, double horizon = 1.0);
 
    private:
-	/** The engine, rebuilt whenever `options.vfh` changed since. */
-	VfhPlus& engine();
-	std::unique_ptr<VfhPlus> m_engine;
+	static constexpr size_t kSafetyLevels = 3;
+	/** The engine of safety level `level` (0: options.vfh; 1: half its
+	 * safety distance; 2: a quarter), rebuilt whenever `options.vfh` changed
+	 * since. Each keeps its own hysteresis and previous direction. */
+	VfhPlus& engine(size_t level);
+	std::array<std::unique_ptr<VfhPlus>, kSafetyLevels> m_engines;
 };
 
 }  // namespace lvf::vfh
