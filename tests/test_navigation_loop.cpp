@@ -5,8 +5,11 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
+#include <lvfusion/navigation/RandomScenario.h>
 #include <lvfusion/navigation/WorldCollision.h>
+#include <lvfusion/planning/ValueIterationPlanner.h>
 #include <lvfusion/plugin/registerAllClasses.h>
+#include <lvfusion/simulation/GroundTruth.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <gtest/gtest.h>
 
@@ -181,4 +184,25 @@ TEST(HolonomicMethods, FoundByNameInMrptsRegistry)
 	EXPECT_THROW(nav::requireHolonomicMethod("CHolonomicNope", "--method"), lvf::common::InputError);
 	// Registered, but not a holonomic method.
 	EXPECT_THROW(nav::requireHolonomicMethod("CPose2D", "--method"), lvf::common::InputError);
+}
+
+TEST(RandomScenario, TargetsAreReachableWhereTheRoomAllowsIt)
+{
+	// Clutter walled the far corner in for overhang rooms 17 and 34 (the
+	// robot can stand there, but no way leads there): the target moves along
+	// the far wall to a place a way leads to. Checked on the world's true
+	// obstacles in the robot's band, grown by its radius, as the scenario
+	// does; room 50 has no such place and keeps the first place the robot
+	// fits (its runs end "unreachable").
+	lvf::planning::ValueIterationPlanner::TOptions o;
+	for (uint32_t seed : {17u, 34u, 50u})
+	{
+		const auto s = nav::randomScenario(seed, nav::RoomKind::Overhangs);
+		o.robotRadius = s.world.robot.radius;
+		const bool reachable = lvf::planning::ValueIterationPlanner(o)
+			.plan(lvf::simulation::obstacleGrid(s.world, 0.05, 0.5), {s.start.x, s.start.y}, s.target)
+			.found();
+		EXPECT_EQ(reachable, seed != 50u) << s.world.name;
+		EXPECT_GT(nav::WorldCollision(s.world, s.world.robot).clearance(s.target).distance, 0.1) << s.world.name;
+	}
 }
