@@ -8,6 +8,8 @@
 
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 
+#include "AllowedColumns.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -40,18 +42,9 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	// (A flat coarse window would divide by zero; the full one has texture.)
 	scores.reset(uc, vc, coarse.leftMean(vc, uc), std::max(coarse.leftStd(vc, uc), 1e-3f));
 	const int context = std::max(2, m_options.peakContext / 2);
-	const int xFirst = static_cast<int>(std::ceil(coarseColumn(set[set.size() - 1].hi)));
-	const int xLast = static_cast<int>(std::floor(coarseColumn(set[0].lo)));
+	const auto [xFirst, xLast] = columnSpan(set, coarseColumn);
 	scores.compute(xFirst - context, xLast + context);
-	int bestXc = -1;
-	float bestC = -2.f;
-	for (size_t k = 0; k < set.size(); k++)
-	{
-		const int xLo = std::max(static_cast<int>(std::ceil(coarseColumn(set[k].hi))), scores.firstColumn());
-		const int xHi = std::min(static_cast<int>(std::floor(coarseColumn(set[k].lo))), scores.lastColumn());
-		for (int x = xLo; x <= xHi; x++)
-			if (scores.at(x) > bestC) bestC = scores.at(x), bestXc = x;
-	}
+	const auto [bestXc, bestC] = bestAllowedColumn(scores, set, coarseColumn);
 	// A stretch narrower than a coarse column: nothing to gain here.
 	if (bestXc < 0) return matchAtFullResolution(full, q);
 	Match m;
@@ -70,15 +63,8 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	EpipolarScores& fine = full.forward;
 	fine.reset(q.u, q.v, q.leftMean, q.leftStd);
 	fine.compute(xEstimate - kRefineColumns, xEstimate + kRefineColumns);
-	int bestX = -1;
-	float best = -2.f;
-	for (size_t k = 0; k < set.size(); k++)
-	{
-		const int xLo = std::max({static_cast<int>(std::ceil(q.column(set[k].hi))), xEstimate - kRefineColumns, fine.firstColumn()});
-		const int xHi = std::min({static_cast<int>(std::floor(q.column(set[k].lo))), xEstimate + kRefineColumns, fine.lastColumn()});
-		for (int x = xLo; x <= xHi; x++)
-			if (fine.at(x) > best) best = fine.at(x), bestX = x;
-	}
+	const auto [bestX, best] = bestAllowedColumn(
+		fine, set, [&](double d) { return q.column(d); }, xEstimate - kRefineColumns, xEstimate + kRefineColumns);
 	if (bestX < 0)
 	{
 		m.outcome = SearchOutcome::NotPeak;

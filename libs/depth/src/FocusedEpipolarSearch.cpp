@@ -3,6 +3,7 @@
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include "AllowedColumns.h"
 #include <opencv2/imgproc.hpp>
 
 #include <Eigen/Dense>
@@ -181,6 +182,7 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	// model's disparity; on the background beside the object it matches
 	// poorly there, or the model (the surface behind) explains it at least
 	// as well.
+	const int xModel = q.modelDisparity > 0 ? static_cast<int>(std::lround(q.column(q.modelDisparity))) : -1;
 	if (m_options.coreWindow > 0)
 	{
 		const int coreHalf = m_options.coreWindow / 2;
@@ -188,7 +190,6 @@ bool FocusedEpipolarSearch::passesLocalTests(
 		bool modelExplainsCore = false;
 		if (q.modelDisparity > 0 && core >= m_options.coreAcceptNcc)
 		{
-			const int xModel = static_cast<int>(std::lround(q.column(q.modelDisparity)));
 			// Strictly better: the match's own column may be among these
 			// (an obstacle just in front of a far wall lies that close).
 			for (int x = xModel - 1; x <= xModel + 1 && !modelExplainsCore; x++)
@@ -209,7 +210,6 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	// obstacle scoring, not the model.
 	if (q.modelDisparity > 0)
 	{
-		const int xModel = static_cast<int>(std::lround(q.column(q.modelDisparity)));
 		scores.compute(xModel - 2, xModel + 2);
 		const auto [peakLo, peakHi] = scores.flanks(bestX, xModel - 2, xModel + 2);
 		for (int x = xModel - 2; x <= xModel + 2; x++)
@@ -232,18 +232,10 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchAtFullResolution(
 	scores.reset(q.u, q.v, q.leftMean, q.leftStd);
 	const DisparitySet& set = q.set;
 	const int context = m_options.peakContext;
-	const int xFirst = static_cast<int>(std::ceil(q.column(set[set.size() - 1].hi)));
-	const int xLast = static_cast<int>(std::floor(q.column(set[0].lo)));
+	auto column = [&](double d) { return q.column(d); };
+	const auto [xFirst, xLast] = columnSpan(set, column);
 	scores.compute(xFirst - context, xLast + context);
-	int bestX = -1;
-	float best = -2.f;
-	for (size_t k = 0; k < set.size(); k++)
-	{
-		const int xLo = std::max(static_cast<int>(std::ceil(q.column(set[k].hi))), scores.firstColumn());
-		const int xHi = std::min(static_cast<int>(std::floor(q.column(set[k].lo))), scores.lastColumn());
-		for (int x = xLo; x <= xHi; x++)
-			if (scores.at(x) > best) best = scores.at(x), bestX = x;
-	}
+	const auto [bestX, best] = bestAllowedColumn(scores, set, column);
 	Match m;
 	if (bestX < 0 || !passesLocalTests(full, q, bestX, best, m)) return m;
 	// Unique within the stretch searched: no other local maximum close to it.
@@ -357,8 +349,12 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			if (u + stride > W - 1 - half)
 				for (int ue = u + stride; ue <= std::min(W - 1, u + half); ue += stride) extendTo(ue);
 		}
-	out.firstColumn = static_cast<float>(half - (half / stride) * stride);
-	out.lastColumn = static_cast<float>(half + ((W - 1 - 2 * half) / stride) * stride + (half / stride) * stride);
+	// The grid's first and last columns, and as far beyond them as
+	// whole strides stay within half a window.
+	const int lastGridColumn = half + ((W - 1 - 2 * half) / stride) * stride;
+	const int reach = (half / stride) * stride;
+	out.firstColumn = static_cast<float>(half - reach);
+	out.lastColumn = static_cast<float>(lastGridColumn + reach);
 	stats.disparitiesTested = full.forward.evaluations() + (coarse ? coarse->forward.evaluations() : 0);
 	return out;
 }
