@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -66,6 +67,10 @@ namespace
  * vectorised the wrong loop (across the window's columns, with shuffles).
  * Loaded and stored with memcpy: no alignment assumed. */
 typedef float Floats8 __attribute__((vector_size(32)));
+/** Four floats, one SSE register, and their comparison masks: the
+ * default target's own width (wider vectors' masks were scalarised). */
+typedef float Floats4 __attribute__((vector_size(16)));
+typedef int32_t Ints4 __attribute__((vector_size(16)));
 
 /** out[k] = sum over the window of left(u, v) x right(x + k, v), k < 8 V.
  * The sums stay in V registers for the whole window: summed into memory,
@@ -119,7 +124,7 @@ void crossTerms(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int
 }
 /** scores[i] = NCC of the left window with the right one at column i, from
  * the cross sums and both windows' statistics; -1 where the right window is
- * flat. Eight at a time in explicit vectors (the compiler would not
+ * flat. Four at a time in explicit vectors (the compiler would not
  * if-convert the flat-window test), the same operations as the scalar tail.
  * Not cloned: without FMA no product is fused into a sum, so it rounds the
  * same on every CPU. */
@@ -128,14 +133,16 @@ void nccScores(
 	float leftStd, float* scores)
 {
 	int i = 0;
-	for (; i + 8 <= n; i += 8)
+	for (; i + 4 <= n; i += 4)
 	{
-		Floats8 s, m, d;
+		Floats4 s, m, d;
 		std::memcpy(&s, sums + i, sizeof s);
 		std::memcpy(&m, means + i, sizeof m);
 		std::memcpy(&d, deviations + i, sizeof d);
-		const Floats8 ncc = (s / area - leftMean * m) / (leftStd * d);
-		const Floats8 out = d < kMinRightStd ? Floats8{} - 1.f : ncc;
+		const Floats4 ncc = (s / area - leftMean * m) / (leftStd * d);
+		// A bitwise blend: ?: on vectors came out as scalar branches.
+		const Ints4 flat = d < kMinRightStd;
+		const Floats4 out = Floats4((Ints4(Floats4{} - 1.f) & flat) | (Ints4(ncc) & ~flat));
 		std::memcpy(scores + i, &out, sizeof out);
 	}
 	for (; i < n; i++)
