@@ -23,6 +23,7 @@ void NavigationLoopOptions::loadFromConfigFile(
 	unreachableAfter = ini.real("unreachable_after", unreachableAfter, 0, 1e6);
 	turnInPlaceAboveDeg = ini.real("turn_in_place_above_deg", turnInPlaceAboveDeg, 30, 180);
 	turnRateDegps = ini.real("turn_rate_degps", turnRateDegps, 1, 720);
+	lookAroundAtStart = ini.flag("look_around_at_start", lookAroundAtStart);
 	ini.rejectUnknownKeys();
 }
 
@@ -43,6 +44,7 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "unreachable_after", unreachableAfter, "no path on the grid for this long ends the run as unreachable [s]");
 	writeOption(c, s, "turn_in_place_above_deg", turnInPlaceAboveDeg, "with guidance: turn on the spot while the subgoal is more than this off the heading [deg]");
 	writeOption(c, s, "turn_rate_degps", turnRateDegps, "rate of that turn [deg/s]");
+	writeOption(c, s, "look_around_at_start", lookAroundAtStart, "turn once on the spot, sensing, before moving (the sensors see nothing behind the robot)");
 }
 
 }  // namespace lvf::navigation

@@ -158,6 +158,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 	double nextPlanTime = 0;  // plan at the first step
 	double noPathSince = -1;  // <0: a path existed at the last plan
 	bool turning = false;  // turning in place towards the subgoal
+	double lookAroundLeft = loop.lookAroundAtStart ? 2 * M_PI : 0;  // [rad] of the first turn
 	if (!guided) steerAt(scenario.target, true);
 
 	const bool fused = setup.sensing == Sensing::Fused;
@@ -224,7 +225,16 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 		// turns on the spot until it faces the subgoal, then the navigator
 		// takes over again.
 		const double bearing = mrpt::math::wrapToPi(std::atan2(subgoal.y - pose.y, subgoal.x - pose.x) - pose.phi);
-		if (guided && std::abs(bearing) > (turning ? kTurnUntil : mrpt::DEG2RAD(loop.turnInPlaceAboveDeg)))
+		if (lookAroundLeft > 0)
+		{
+			mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
+			cmd.ang_vel = mrpt::DEG2RAD(loop.turnRateDegps);
+			robot.changeSpeeds(cmd);
+			lookAroundLeft -= cmd.ang_vel * loop.controlPeriod;
+			// Plan afresh on what the turn saw, and start the navigator then.
+			if (lookAroundLeft <= 0) nextPlanTime = m.time + loop.controlPeriod, turning = true;
+		}
+		else if (guided && std::abs(bearing) > (turning ? kTurnUntil : mrpt::DEG2RAD(loop.turnInPlaceAboveDeg)))
 		{
 			mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
 			cmd.ang_vel = std::copysign(mrpt::DEG2RAD(loop.turnRateDegps), bearing);

@@ -32,6 +32,12 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	 * than this off its heading (MRPT's forward PTGs cannot) [deg]. */
 	double turnInPlaceAboveDeg = 90;
 	double turnRateDegps = 60;	//!< that turn's rate [deg/s]
+	/** Before moving, the robot turns once on the spot at turnRateDegps,
+	 * sensing as it goes: its laser covers 180 degrees and its cameras 70,
+	 * so at the start the grid knows nothing behind or beside it, and the
+	 * navigator would reverse (MRPT's backward PTG) or swing into space
+	 * never seen (measured: README, lvf-navigate). */
+	bool lookAroundAtStart = true;
 
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& source, const std::string& section) override;
