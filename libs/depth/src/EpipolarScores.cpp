@@ -42,10 +42,10 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 	m_leftStd = leftStd;
 }
 
-// The cross-term loop is most of the fusion's time. The default x86-64
-// target vectorises it 4 floats wide; an AVX2 clone, picked at load time
-// where the CPU has AVX2 (a feature test: "arch=..." clones test the CPU
-// model and miss newer ones), runs 8 wide. The sums are the same bit for
+// The cross-term loop is most of the search's time. The default x86-64
+// target runs its 8-float vectors as pairs of SSE registers; an AVX2 clone,
+// picked at load time where the CPU has AVX2 (a feature test: "arch=..."
+// clones test the CPU model and miss newer ones), as single registers. The sums are the same bit for
 // bit: for windows up to 15 x 15 (default 11) every product and partial sum
 // is an integer below 2^24, which float holds exactly, so the order of the
 // additions cannot change them (larger windows may differ in the last bit
@@ -112,7 +112,7 @@ LVF_ALWAYS_INLINE float crossColumn(const cv::Mat1f& left, const cv::Mat1f& righ
 }
 
 /** acc[i] = sum over the window of left(u, v) x right(x0 + i, v), i < n:
- * blocks of 16 and 8 columns, single columns for the rest. */
+ * blocks of 32, 16 and 8 columns, single columns for the rest. */
 LVF_VECTOR_CLONES
 void crossTerms(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x0, int n, int half, float* acc)
 {
@@ -122,6 +122,7 @@ void crossTerms(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int
 	for (; i + 8 <= n; i += 8) crossBlock<1>(left, right, u, v, x0 + i, half, acc + i);
 	for (; i < n; i++) acc[i] = crossColumn(left, right, u, v, x0 + i, half);
 }
+
 /** scores[i] = NCC of the left window with the right one at column i, from
  * the cross sums and both windows' statistics; -1 where the right window is
  * flat. Four at a time in explicit vectors (the compiler would not
