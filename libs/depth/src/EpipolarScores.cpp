@@ -45,11 +45,11 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 // The cross-term loop is most of the search's time. The default x86-64
 // target runs its 8-float vectors as pairs of SSE registers; an AVX2 clone,
 // picked at load time where the CPU has AVX2 (a feature test: "arch=..."
-// clones test the CPU model and miss newer ones), as single registers. The sums are the same bit for
-// bit: for windows up to 15 x 15 (default 11) every product and partial sum
-// is an integer below 2^24, which float holds exactly, so the order of the
-// additions cannot change them (larger windows may differ in the last bit
-// between CPUs). Only this loop is cloned: the score formula after it must
+// clones test the CPU model and miss newer ones), as single registers. The
+// sums are the same bit for bit: for windows up to 15 x 15 (default 11)
+// every product and partial sum is an integer below 2^24, which float holds
+// exactly, so the order of the additions cannot change them (larger windows
+// may differ in the last bit between CPUs). Only this loop is cloned: the score formula after it must
 // round the same way everywhere.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define LVF_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))

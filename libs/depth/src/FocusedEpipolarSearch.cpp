@@ -208,16 +208,10 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	// an obstacle less than a couple of pixels of disparity in front of the
 	// wall (far away) has the model's column on its flank, and that is the
 	// obstacle scoring, not the model.
-	if (q.modelDisparity > 0)
+	if (q.modelDisparity > 0 && !beatsTheRestOfTheLine(scores, bestX, best, xModel - 2, xModel + 2))
 	{
-		scores.compute(xModel - 2, xModel + 2);
-		const auto [peakLo, peakHi] = scores.flanks(bestX, xModel - 2, xModel + 2);
-		for (int x = xModel - 2; x <= xModel + 2; x++)
-			if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin)
-			{
-				m.outcome = SearchOutcome::Ambiguous;
-				return false;
-			}
+		m.outcome = SearchOutcome::Ambiguous;
+		return false;
 	}
 	m.outcome = SearchOutcome::Accepted;
 	return true;

@@ -159,6 +159,13 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 	double noPathSince = -1;  // <0: a path existed at the last plan
 	bool turning = false;  // turning in place towards the subgoal
 	double lookAroundLeft = loop.lookAroundAtStart ? 2 * M_PI : 0;  // [rad] of the first turn
+	const double turnRate = mrpt::DEG2RAD(loop.turnRateDegps);	// [rad/s]
+	// Bypasses the navigator for this step: turn at turnRate towards `side`'s sign.
+	const auto turnOnTheSpot = [&](double side) {
+		mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
+		cmd.ang_vel = std::copysign(turnRate, side);
+		robot.changeSpeeds(cmd);
+	};
 	if (!guided) steerAt(scenario.target, true);
 
 	const bool fused = setup.sensing == Sensing::Fused;
@@ -227,18 +234,14 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 		const double bearing = mrpt::math::wrapToPi(std::atan2(subgoal.y - pose.y, subgoal.x - pose.x) - pose.phi);
 		if (lookAroundLeft > 0)
 		{
-			mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
-			cmd.ang_vel = mrpt::DEG2RAD(loop.turnRateDegps);
-			robot.changeSpeeds(cmd);
-			lookAroundLeft -= cmd.ang_vel * loop.controlPeriod;
+			turnOnTheSpot(+1);
+			lookAroundLeft -= turnRate * loop.controlPeriod;
 			// Plan afresh on what the turn saw, and start the navigator then.
 			if (lookAroundLeft <= 0) nextPlanTime = m.time + loop.controlPeriod, turning = true;
 		}
 		else if (guided && std::abs(bearing) > (turning ? kTurnUntil : mrpt::DEG2RAD(loop.turnInPlaceAboveDeg)))
 		{
-			mrpt::kinematics::CVehicleVelCmd_DiffDriven cmd;
-			cmd.ang_vel = std::copysign(mrpt::DEG2RAD(loop.turnRateDegps), bearing);
-			robot.changeSpeeds(cmd);
+			turnOnTheSpot(bearing);
 			turning = true;
 		}
 		else
