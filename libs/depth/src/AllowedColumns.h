@@ -30,10 +30,10 @@ std::pair<int, float> bestAllowedColumn(
 	float best = -2.f;
 	for (size_t k = 0; k < set.size(); k++)
 	{
-		const int xLo = std::max({static_cast<int>(std::ceil(column(set[k].hi))), lo, scores.firstColumn()});
-		const int xHi = std::min({static_cast<int>(std::floor(column(set[k].lo))), hi, scores.lastColumn()});
-		for (int x = xLo; x <= xHi; x++)
-			if (scores.at(x) > best) best = scores.at(x), bestX = x;
+		const auto [x, score] = scores.best(
+			std::max(static_cast<int>(std::ceil(column(set[k].hi))), lo),
+			std::min(static_cast<int>(std::floor(column(set[k].lo))), hi));
+		if (score > best) best = score, bestX = x;
 	}
 	return {bestX, best};
 }

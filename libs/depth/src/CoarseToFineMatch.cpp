@@ -86,10 +86,9 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	scores.compute(lineNear, lineFar);
 	const auto [flankLo, flankHi] = scores.flanks(bestXc, lineNear, lineFar);
 	std::vector<int> rivals;  // full-resolution column estimates
-	for (int x = lineNear; x <= lineFar; x++)
-		if ((x < flankLo || x > flankHi) && scores.at(x) > bestC - kCoarseRivalMargin &&
-			scores.at(x - 1) <= scores.at(x) && scores.at(x + 1) <= scores.at(x))
-			rivals.push_back(fullColumn(x));
+	scores.forEachPeakAbove(lineNear, lineFar, bestC - kCoarseRivalMargin, [&](int x) {
+		if (x < flankLo || x > flankHi) rivals.push_back(fullColumn(x));
+	});
 	if (m_options.leftRightCheck && !findsItsWayBack(coarse, uc, vc, bestXc, lineNear, lineFar))
 	{
 		m.outcome = SearchOutcome::LeftRight;

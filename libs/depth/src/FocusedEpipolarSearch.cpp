@@ -134,9 +134,7 @@ bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 	// Its own peak's shoulders, which descend from it, do not count.
 	scores.compute(xNear, xFar);
 	const auto [peakLo, peakHi] = scores.flanks(bestX, xNear, xFar);
-	for (int x = xNear; x <= xFar; x++)
-		if ((x < peakLo || x > peakHi) && scores.at(x) > best - m_options.uniquenessMargin) return false;
-	return true;
+	return !scores.anyAbove(xNear, xFar, peakLo, peakHi, best - m_options.uniquenessMargin);
 }
 
 bool FocusedEpipolarSearch::findsItsWayBack(
@@ -149,11 +147,7 @@ bool FocusedEpipolarSearch::findsItsWayBack(
 	const int lo = u + x - xFar, hi = u + x - xNear;
 	EpipolarScores& back = level.backward;
 	back.reset(x, v, level.rightMean(v, x), std::max(level.rightStd(v, x), 1e-3f));
-	back.compute(lo, hi);
-	int bestU = -1;
-	float best = -2.f;
-	for (int c = std::max(lo, back.firstColumn()); c <= std::min(hi, back.lastColumn()); c++)
-		if (back.at(c) > best) best = back.at(c), bestU = c;
+	const int bestU = back.best(lo, hi).first;
 	return std::abs(bestU - u) <= 1;
 }
 
@@ -233,14 +227,16 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchAtFullResolution(
 	Match m;
 	if (bestX < 0 || !passesLocalTests(full, q, bestX, best, m)) return m;
 	// Unique within the stretch searched: no other local maximum close to it.
-	for (int x = std::max(xFirst - context, scores.firstColumn()) + 1;
-		 x < std::min(xLast + context, scores.lastColumn()); x++)
-		if (std::abs(x - bestX) > 1 && scores.at(x) > best - m_options.uniquenessMargin &&
-			scores.at(x - 1) <= scores.at(x) && scores.at(x + 1) <= scores.at(x))
-		{
-			m.outcome = SearchOutcome::Ambiguous;
-			return m;
-		}
+	bool rival = false;
+	scores.forEachPeakAbove(
+		std::max(xFirst - context, scores.firstColumn()) + 1, std::min(xLast + context, scores.lastColumn()) - 1,
+		best - m_options.uniquenessMargin,
+		[&](int x) { rival |= std::abs(x - bestX) > 1; });
+	if (rival)
+	{
+		m.outcome = SearchOutcome::Ambiguous;
+		return m;
+	}
 	// Where the criteria cut the true match away (it lies behind the model,
 	// or farther than z_max), a side lobe can win inside the set: a
 	// candidate must also beat every other peak of the line, from twice

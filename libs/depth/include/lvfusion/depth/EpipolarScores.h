@@ -42,6 +42,55 @@ class EpipolarScores
 		return m_scores[static_cast<size_t>(x)];
 	}
 
+	/** Calls f(x) for every column x of [lo, hi] that scores above
+	 * `floor` and no lower than either neighbour (neighbours outside
+	 * [lo, hi] count too; beyond the image they score -2). The uniqueness
+	 * tests walk whole lines this way: one compute, then plain reads (at()
+	 * tests every column's bounds and state, and those tests cost more than
+	 * the comparisons). */
+	template <typename F>
+	void forEachPeakAbove(int lo, int hi, double floor, F f)
+	{
+		lo = std::max(lo, firstColumn());
+		hi = std::min(hi, lastColumn());
+		if (lo > hi) return;
+		const float* s = scored(lo - 1, hi + 1);
+		for (int x = lo; x <= hi; x++)
+		{
+			const float here = s[x];
+			if (here <= floor) continue;
+			const float before = x > firstColumn() ? s[x - 1] : -2.f;
+			const float after = x < lastColumn() ? s[x + 1] : -2.f;
+			if (before <= here && after <= here) f(x);
+		}
+	}
+
+	/** The best score of columns [lo, hi] (clipped to the image) and its
+	 * column, the first of equals; {-1, -2} if none. */
+	std::pair<int, float> best(int lo, int hi)
+	{
+		lo = std::max(lo, firstColumn());
+		hi = std::min(hi, lastColumn());
+		const float* s = scored(lo, hi);
+		int bestX = -1;
+		float bestScore = -2.f;
+		for (int x = lo; x <= hi; x++)
+			if (s[x] > bestScore) bestScore = s[x], bestX = x;
+		return {bestX, bestScore};
+	}
+
+	/** Whether any column of [lo, hi] outside [skipLo, skipHi] scores above
+	 * `floor`. */
+	bool anyAbove(int lo, int hi, int skipLo, int skipHi, double floor)
+	{
+		lo = std::max(lo, firstColumn());
+		hi = std::min(hi, lastColumn());
+		const float* s = scored(lo, hi);
+		for (int x = lo; x <= hi; x++)
+			if ((x < skipLo || x > skipHi) && s[x] > floor) return true;
+		return false;
+	}
+
 	/** The columns around the peak at `peak` over which the scores descend
 	 * from it on both sides (its flanks), looked for no farther than
 	 * [lo, hi] (or the peak itself). */
@@ -58,6 +107,23 @@ class EpipolarScores
 	size_t evaluations() const { return m_evaluations; }
 
    private:
+	/** The scores, indexed by column, with [lo, hi] (clipped to the image)
+	 * computed. Mostly they are already: this looks for the first column
+	 * that is not, rather than compute()'s trimming of both ends, and
+	 * computes from there on. */
+	const float* scored(int lo, int hi)
+	{
+		lo = std::max(lo, firstColumn());
+		hi = std::min(hi, lastColumn());
+		for (int x = lo; x <= hi; x++)
+			if (std::isnan(m_scores[static_cast<size_t>(x)]))
+			{
+				compute(x, hi);
+				break;
+			}
+		return m_scores.data();
+	}
+
 	static constexpr int kBlock = 8;  //!< columns scored together on a miss
 	const cv::Mat1f& m_left;
 	const cv::Mat1f& m_right;
