@@ -40,7 +40,7 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	const DisparitySet& set = q.set;
 	EpipolarScores& scores = coarse.forward;
 	// (A flat coarse window would divide by zero; the full one has texture.)
-	scores.reset(uc, vc, coarse.leftMean(vc, uc), std::max(coarse.leftStd(vc, uc), 1e-3f));
+	scores.reset(uc, vc, coarse.leftMeanAt(vc, uc), std::max(coarse.leftStdAt(vc, uc), 1e-3f));
 	const int context = std::max(2, m_options.peakContext / 2);
 	const auto [xFirst, xLast] = columnSpan(set, coarseColumn);
 	scores.compute(xFirst - context, xLast + context);

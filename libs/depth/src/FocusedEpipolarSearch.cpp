@@ -145,7 +145,7 @@ bool FocusedEpipolarSearch::findsItsWayBack(
 	// columns [xNear, xFar], are d = u + cxOffset - [xNear, xFar]; from x they
 	// reach the left columns u + x - [xFar, xNear].
 	const int lo = u + x - xFar, hi = u + x - xNear;
-	EpipolarScores& back = level.backward;
+	EpipolarScores& back = level.backward();
 	back.reset(x, v, level.rightMean(v, x), std::max(level.rightStd(v, x), 1e-3f));
 	const int bestU = back.best(lo, hi).first;
 	return std::abs(bestU - u) <= 1;

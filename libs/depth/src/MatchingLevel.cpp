@@ -41,10 +41,32 @@ MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h)
 	  left(std::move(l)),
 	  right(std::move(r)),
 	  forward(left, right, rightMean, rightStd, half),
-	  backward(right, left, leftMean, leftStd, half)
+	  m_backward(right, left, m_leftMean, m_leftStd, half)
 {
-	windowStatistics(left, half, leftMean, leftStd);
 	windowStatistics(right, half, rightMean, rightStd);
+}
+
+void MatchingLevel::needLeftStatistics()
+{
+	if (m_leftMean.empty()) windowStatistics(left, half, m_leftMean, m_leftStd);
+}
+
+EpipolarScores& MatchingLevel::backward()
+{
+	needLeftStatistics();
+	return m_backward;
+}
+
+float MatchingLevel::leftMeanAt(int v, int u)
+{
+	needLeftStatistics();
+	return m_leftMean(v, u);
+}
+
+float MatchingLevel::leftStdAt(int v, int u)
+{
+	needLeftStatistics();
+	return m_leftStd(v, u);
 }
 
 MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h)
