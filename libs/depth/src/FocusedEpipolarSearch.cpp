@@ -31,6 +31,7 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	acceptNcc = ini.real("accept_ncc", acceptNcc, -1, 1);
 	uniquenessMargin = ini.real("uniqueness_margin", uniquenessMargin, 0, 2);
 	peakContext = ini.integer("peak_context", peakContext, 1, 64);
+	textureNoiseRatio = ini.real("texture_noise_ratio", textureNoiseRatio, 0, 100);
 	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
 	verifyFullLine = ini.flag("verify_full_line", verifyFullLine);
 	leftRightCheck = ini.flag("left_right_check", leftRightCheck);
@@ -56,7 +57,8 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "pixel_stride", pixelStride, "search every n-th inconsistent pixel along rows and columns");
 	writeOption(c, s, "accept_ncc", acceptNcc, "a match must score at least this NCC [-1..1]");
 	writeOption(c, s, "uniqueness_margin", uniquenessMargin, "any other NCC peak must be lower by this much");
-	writeOption(c, s, "min_texture_std", minTextureStd, "search only windows with at least this std: matching needs more texture than checking [grey levels]");
+	writeOption(c, s, "texture_noise_ratio", textureNoiseRatio, "search only windows whose std is at least this many times the image's noise: matching needs more texture than checking");
+	writeOption(c, s, "min_texture_std", minTextureStd, "and at least this, whatever the noise [grey levels]");
 	writeOption(c, s, "peak_context", peakContext, "NCC also scored this far outside the allowed range, so a peak cut by a bound is seen [px]");
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
 	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, better than at the model's disparity, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
@@ -275,6 +277,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	out.outcome = cv::Mat1b::zeros(H, W);
 	auto& stats = out.stats;
 	const int stride = m_options.pixelStride;
+	const double textureGate = std::max(m_options.minTextureStd, m_options.textureNoiseRatio * evaluation.noiseStd);
 	for (int v = half; v < H - half; v += stride)
 		for (int u = half; u < W - half; u += stride)
 		{
@@ -284,7 +287,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 				out.outcome(v, u) = static_cast<uint8_t>(o);
 				counter++;
 			};
-			if (evaluation.leftStd(v, u) < m_options.minTextureStd)
+			if (evaluation.leftStd(v, u) < textureGate)
 			{
 				mark(SearchOutcome::Untextured, stats.skippedUntextured);
 				continue;

@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <opencv2/imgproc.hpp>
 
@@ -19,6 +20,7 @@ void ModelEvaluator::TOptions::loadFromConfigFile(
 		throw lvf::common::InputError(
 			ini.sourceName(), "[" + section + "] window_size", "must be odd");
 	nccThreshold = ini.real("ncc_threshold", nccThreshold, -1, 1);
+	textureNoiseRatio = ini.real("texture_noise_ratio", textureNoiseRatio, 0, 100);
 	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
 	ini.rejectUnknownKeys();
 }
@@ -28,7 +30,8 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 {
 	writeOption(c, s, "window_size", windowSize, "NCC window side, odd [px]");
 	writeOption(c, s, "ncc_threshold", nccThreshold, "NCC below this: the model is wrong there [-1..1]");
-	writeOption(c, s, "min_texture_std", minTextureStd, "window std below this: untextured, not judged [grey levels]");
+	writeOption(c, s, "texture_noise_ratio", textureNoiseRatio, "window std below this many times the image's noise (estimated per frame): untextured, not judged");
+	writeOption(c, s, "min_texture_std", minTextureStd, "or below this, whatever the noise [grey levels]");
 }
 
 namespace
@@ -71,6 +74,8 @@ ModelEvaluation ModelEvaluator::evaluate(
 {
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
+	out.noiseStd = estimateNoiseStd(left);
+	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
 
@@ -95,7 +100,7 @@ ModelEvaluation ModelEvaluator::evaluate(
 	cv::Mat1f denominator;
 	cv::sqrt(varL.mul(varW) + 1e-6, denominator);
 	cv::divide(meanLW - out.leftMean.mul(meanW), denominator, out.ncc);
-	const double minVar = m_options.minTextureStd * m_options.minTextureStd;
+	const double minVar = out.textureGate * out.textureGate;
 	// A flat right window against a textured left one is a mismatch, not a
 	// lack of evidence: its NCC is taken as 0.
 	out.ncc.setTo(0, varW < minVar);
@@ -120,6 +125,8 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 		throw std::invalid_argument("evaluateGrid: the grid must start at window_size / 2 or later");
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
+	out.noiseStd = estimateNoiseStd(left);
+	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
@@ -142,7 +149,7 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	out.leftStd = cv::Mat1f::zeros(size);
 	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::NotEvaluated));
 	const double area = double(m_options.windowSize * m_options.windowSize);
-	const double minVar = m_options.minTextureStd * m_options.minTextureStd;
+	const double minVar = out.textureGate * out.textureGate;
 	for (int v = first; v < size.height - half; v += stride)
 		for (int u = first; u < size.width - half; u += stride)
 		{

@@ -15,6 +15,7 @@
 #include <lvfusion/evaluation/RectifiedStereo.h>
 #include <mrpt/config/CLoadableOptions.h>
 
+#include <algorithm>
 #include <array>
 
 namespace lvf::evaluation
@@ -38,6 +39,8 @@ struct ModelEvaluation
 	cv::Mat1f ncc;	//!< left vs model-warped right, in [-1, 1]
 	cv::Mat1b state;  //!< PixelState per pixel
 	cv::Mat1f leftMean, leftStd;  //!< window statistics of the left image
+	double noiseStd = 0;  //!< the left image's noise (ImageNoise.h) [grey levels]
+	double textureGate = 0;	 //!< windows whose std is below this were untextured [grey levels]
 	std::array<size_t, 6> counts{};	 //!< pixels per PixelState
 
 	size_t count(PixelState s) const { return counts[static_cast<size_t>(s)]; }
@@ -57,7 +60,14 @@ class ModelEvaluator
 		 * recall 0.750 -> 0.810, phantom rate 0.043 -> 0.048; rooms 11-16
 		 * 0.905 -> 0.914, 0.074 both; Middlebury Recycle 0.377 -> 0.396). */
 		double nccThreshold = 0.9;
-		double minTextureStd = 4.0;	 //!< window std below this: untextured [grey levels]
+		/** A window is untextured when its std is below this many times
+		 * the image's noise (ImageNoise.h)... Measured: 1.8 x 2.22 = 4.0 on
+		 * the simulator, the absolute gate that was fitted to it before. */
+		double textureNoiseRatio = 1.8;
+		double minTextureStd = 1.0;	 //!< ...or below this, whatever the noise [grey levels]
+
+		/** The gate for an image with this noise [grey levels]. */
+		double textureGate(double noiseStd) const { return std::max(minTextureStd, textureNoiseRatio * noiseStd); }
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
