@@ -47,7 +47,7 @@ FusionOutputs::FusionOutputs(
 	  m_fusedGrid(-5, 5, -5, 5, static_cast<float>(gridResolution))
 {
 	m_csv.open(files.stage(name + "_frames.csv"));
-	m_csv << "frame,timestamp,segments,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
+	m_csv << "frame,timestamp,segments,noise_std,texture_gate,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
 			 "visual_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
 			 "hidden_range_error_m\n";
@@ -96,8 +96,8 @@ void FusionOutputs::add(
 		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
 	const auto& t = r.times;
 	m_csv << mrpt::format(
-		"%zu,%.6f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
-		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(),
+		"%zu,%.6f,%zu,%.2f,%.2f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
+		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(), r.evaluation.noiseStd, r.evaluation.textureGate,
 		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Unmodelled),
 		r.evaluation.count(PixelState::Untextured),
 		r.search.stats.searchedPixels, r.search.stats.disparitiesTested, r.search.points.size(),

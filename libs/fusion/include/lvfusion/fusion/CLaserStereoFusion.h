@@ -35,12 +35,12 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		 * frame falls back to the laser, when less than this share of the
 		 * model's floor looks consistent in the images (FloorAgreement.h;
 		 * measured: 0.01 with a wrong baseline; 0.75-0.95 on simulated rooms,
-		 * 0.41-0.43 on the Middlebury floors, whose cluttered scenes the
+		 * 0.33 and 0.73 on the Middlebury floors, whose cluttered scenes the
 		 * floor-and-walls model explains only roughly)... */
 		double minFloorAgreement = 0.2;
 		/** ...or more than this share of all judged pixels is inconsistent
 		 * (for frames without a judged floor; measured 0.99 with a wrong
-		 * baseline, at most 0.72 on the samples, random rooms and Middlebury). */
+		 * baseline, at most 0.77 on the samples, random rooms and Middlebury). */
 		double maxInconsistentFraction = 0.95;
 		/** Sampled floor pixels needed to judge the floor at all. */
 		static constexpr size_t kMinJudgedFloorPixels = 100;
