@@ -1,7 +1,8 @@
 #pragma once
 // One resolution of the rectified pair, ready for window matching along rows:
 // float images, the window mean and deviation of every pixel of both (box
-// filters, once per frame), and an EpipolarScores each way (left windows
+// filters, once per frame; the left image's when first asked for), and an
+// EpipolarScores each way (left windows
 // against the right row for the search, right windows against the left row
 // for the left-right check). The focused search keeps one at full
 // resolution and, for coarse-to-fine matching, one at half resolution.
