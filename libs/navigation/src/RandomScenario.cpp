@@ -72,7 +72,8 @@ TargetPlace placeTarget(const NavigationScenario& s)
 	return place;
 }
 
-/** Seeds of redrawn rooms: a different stream for every attempt. */
+/** The seed of a room's attempt: the seed itself first, then a different
+ * stream for every redraw. */
 uint32_t redrawSeed(uint32_t seed, int attempt) { return seed ^ (0x9E3779B9u * uint32_t(attempt)); }
 
 }  // namespace
@@ -91,7 +92,7 @@ NavigationScenario randomScenario(uint32_t seed, RoomKind kind)
 	NavigationScenario s;
 	for (int attempt = 0; attempt < kRedraws; attempt++)
 	{
-		s.world = lvf::simulation::generateRandomWorld(attempt == 0 ? seed : redrawSeed(seed, attempt), roomOptions(kind));
+		s.world = lvf::simulation::generateRandomWorld(redrawSeed(seed, attempt), roomOptions(kind));
 		s.world.name = std::string(roomKindName(kind)) + "_" + std::to_string(seed);
 		s.start = s.world.path.front();
 		s.target = *s.world.target;

@@ -17,10 +17,19 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
+
 namespace lvf::evaluation
 {
 /** Noise std of `image` [grey levels], from every `rowStep`-th row (the
  * median needs far fewer than all of them). */
 double estimateNoiseStd(const cv::Mat1b& image, int rowStep = 4);
+
+/** A texture gate of `ratio` times the noise, and at least `floor` [grey
+ * levels]: the evaluation's and the search's gates alike. */
+inline double noiseRelativeGate(double noiseStd, double ratio, double floor)
+{
+	return std::max(floor, ratio * noiseStd);
+}
 
 }  // namespace lvf::evaluation

@@ -12,10 +12,10 @@
 // evaluateGrid() judges just those pixels, from integral images (four
 // look-ups per window sum), at a fraction of the whole image's cost.
 
+#include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/RectifiedStereo.h>
 #include <mrpt/config/CLoadableOptions.h>
 
-#include <algorithm>
 #include <array>
 
 namespace lvf::evaluation
@@ -67,7 +67,7 @@ class ModelEvaluator
 		double minTextureStd = 1.0;	 //!< ...or below this, whatever the noise [grey levels]
 
 		/** The gate for an image with this noise [grey levels]. */
-		double textureGate(double noiseStd) const { return std::max(minTextureStd, textureNoiseRatio * noiseStd); }
+		double textureGate(double noiseStd) const { return noiseRelativeGate(noiseStd, textureNoiseRatio, minTextureStd); }
 
 		void loadFromConfigFile(
 			const mrpt::config::CConfigFileBase& source,
