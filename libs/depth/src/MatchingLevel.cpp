@@ -12,11 +12,17 @@ cv::Mat1f asFloat(const cv::Mat1b& image)
 	return out;
 }
 
+/** Half resolution, rounded to whole grey levels: then every window's cross
+ * sum is an integer below 2^24, exact in float whatever the order of its
+ * additions (EpipolarScores sums in several chains, differently for
+ * different stretches), so a column scores the same however it was reached. */
 cv::Mat1f pyramidDown(const cv::Mat1f& image)
 {
-	cv::Mat1f out;
-	cv::pyrDown(image, out);
-	return out;
+	cv::Mat1f smoothed;
+	cv::pyrDown(image, smoothed);
+	cv::Mat1b grey;
+	smoothed.convertTo(grey, CV_8U);
+	return asFloat(grey);
 }
 
 void windowStatistics(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& deviation)

@@ -108,19 +108,10 @@ class EpipolarScores
 
    private:
 	/** The scores, indexed by column, with [lo, hi] (clipped to the image)
-	 * computed. Mostly they are already: this looks for the first column
-	 * that is not, rather than compute()'s trimming of both ends, and
-	 * computes from there on. */
+	 * computed. */
 	const float* scored(int lo, int hi)
 	{
-		lo = std::max(lo, firstColumn());
-		hi = std::min(hi, lastColumn());
-		for (int x = lo; x <= hi; x++)
-			if (std::isnan(m_scores[static_cast<size_t>(x)]))
-			{
-				compute(x, hi);
-				break;
-			}
+		compute(lo, hi);
 		return m_scores.data();
 	}
 
@@ -133,6 +124,10 @@ class EpipolarScores
 	float m_leftMean = 0, m_leftStd = 1;
 	std::vector<float> m_scores;  // NaN: not computed yet
 	int m_touchedFirst = 0, m_touchedLast = -1;	 // the columns to clear on reset
+	/** A stretch known to be scored throughout (the longest one the calls
+	 * so far have made), so that the walks along a line scored already do
+	 * not test every column's state first. */
+	int m_spanFirst = 0, m_spanLast = -1;
 	std::vector<float> m_cross;	 // scratch: cross terms of a stretch
 	size_t m_evaluations = 0;
 };
