@@ -2,8 +2,10 @@
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <iterator>
 #include <optional>
 
 namespace lvf::navigation
@@ -98,16 +100,25 @@ Guidance planGuidance(
 {
 	Guidance g;
 	g.subgoal = target;
-	const auto map = grid.obstacleMap();
-	// With the full safety growth first, then half of it, then none: the
-	// reactive methods slow and dither in gaps that only just fit the robot,
-	// so a wider way round is worth some length; a gap only the bare radius
-	// fits through is still a way.
+	const auto seen = grid.obstacleMap();
+	std::optional<mrpt::maps::COccupancyGridMap2D> assumed;
+	if (o.overhangDepth > 0) assumed = grid.obstacleMapAssumingOverhangDepth(o.overhangDepth);
+	const auto* withOverhangs = assumed ? &*assumed : &seen;
+	// The full safety growth first, then half of it: the reactive methods
+	// slow and dither in gaps that only just fit the robot, so a wider way
+	// round is worth some length. Round the overhangs' assumed far parts
+	// first; then round what was seen only, ending with the bare radius: a
+	// gap only that fits through is still a way.
+	const std::pair<const mrpt::maps::COccupancyGridMap2D*, double> attempts[] = {
+		{withOverhangs, o.clearance}, {withOverhangs, 0.5 * o.clearance},
+		{&seen, o.clearance}, {&seen, 0.5 * o.clearance}, {&seen, 0.0}};
 	Attempt a;
-	for (const double f : {1.0, 0.5, 0.0})
+	for (size_t k = 0; k < std::size(attempts) && !a.plan.found(); k++)
 	{
-		a = planWithGrowth(map, robot, target, o, o.robotRadius + f * o.clearance);
-		if (a.plan.found() || o.clearance == 0) break;
+		const auto [map, clearance] = attempts[k];
+		// Without overhang depth or clearance some are the same plan again.
+		if (std::find(attempts, attempts + k, attempts[k]) != attempts + k) continue;
+		a = planWithGrowth(*map, robot, target, o, o.robotRadius + clearance);
 	}
 	if (!a.blocked.empty())
 	{

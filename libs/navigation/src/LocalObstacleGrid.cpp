@@ -1,6 +1,8 @@
 #include <lvfusion/navigation/LocalObstacleGrid.h>
 #include <mrpt/poses/CPose3D.h>
 #include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
 
 namespace lvf::navigation
 {
@@ -18,6 +20,7 @@ void LocalObstacleGrid::insertLaser(
 {
 	const mrpt::poses::CPose3D pose(robot);
 	m_laser.insertObservation(scan, pose);
+	keepOneGeometry();
 }
 
 void LocalObstacleGrid::insertVision(
@@ -25,6 +28,18 @@ void LocalObstacleGrid::insertVision(
 {
 	const mrpt::poses::CPose3D pose(robot);
 	m_vision.insertObservation(scan, pose);
+	keepOneGeometry();
+}
+
+void LocalObstacleGrid::keepOneGeometry()
+{
+	const auto same = [](float a, float b) { return std::abs(a - b) < 1e-4f; };
+	if (same(m_laser.getXMin(), m_vision.getXMin()) && same(m_laser.getXMax(), m_vision.getXMax()) &&
+		same(m_laser.getYMin(), m_vision.getYMin()) && same(m_laser.getYMax(), m_vision.getYMax()))
+		return;
+	const float xMin = std::min(m_laser.getXMin(), m_vision.getXMin()), xMax = std::max(m_laser.getXMax(), m_vision.getXMax());
+	const float yMin = std::min(m_laser.getYMin(), m_vision.getYMin()), yMax = std::max(m_laser.getYMax(), m_vision.getYMax());
+	for (auto* g : {&m_laser, &m_vision}) g->resizeGrid(xMin, xMax, yMin, yMax, 0.5f, false);
 }
 
 bool LocalObstacleGrid::obstacle(int cx, int cy) const
@@ -38,6 +53,28 @@ mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMap() const
 	for (unsigned cy = 0; cy < m_laser.getSizeY(); cy++)
 		for (unsigned cx = 0; cx < m_laser.getSizeX(); cx++)
 			out.setCell(int(cx), int(cy), std::min(m_laser.getCell(int(cx), int(cy)), m_vision.getCell(int(cx), int(cy))));
+	return out;
+}
+
+mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMapAssumingOverhangDepth(double depth) const
+{
+	mrpt::maps::COccupancyGridMap2D out = obstacleMap();
+	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
+	cv::Mat1b visionOnly = cv::Mat1b::zeros(H, W);
+	for (int cy = 0; cy < H; cy++)
+		for (int cx = 0; cx < W; cx++)
+			if (m_vision.getCell(cx, cy) < m_occupiedBelow && m_laser.getCell(cx, cy) >= m_occupiedBelow)
+				visionOnly(cy, cx) = 255;
+	const int r = int(std::ceil(depth / m_laser.getResolution()));
+	cv::Mat1b near;
+	cv::dilate(visionOnly, near, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
+	for (int cy = 0; cy < H; cy++)
+	{
+		// Log-odds 0: no observation ever reached the cell.
+		const auto* vision = m_vision.getRow(cy);
+		for (int cx = 0; cx < W; cx++)
+			if (near(cy, cx) && vision[cx] == 0) out.setCell(cx, cy, 0.0f);
+	}
 	return out;
 }
 

@@ -20,6 +20,7 @@ void NavigationLoopOptions::loadFromConfigFile(
 	guidancePeriod = ini.real("guidance_period", guidancePeriod, 1e-3, 1e6);
 	guidanceLookahead = ini.real("guidance_lookahead", guidanceLookahead, 0.1, 100);
 	guidanceClearance = ini.real("guidance_clearance", guidanceClearance, 0, 10);
+	guidanceOverhangDepth = ini.real("guidance_overhang_depth", guidanceOverhangDepth, 0, 10);
 	unreachableAfter = ini.real("unreachable_after", unreachableAfter, 0, 1e6);
 	turnInPlaceAboveDeg = ini.real("turn_in_place_above_deg", turnInPlaceAboveDeg, 30, 180);
 	turnRateDegps = ini.real("turn_rate_degps", turnRateDegps, 1, 720);
@@ -41,6 +42,7 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "guidance_period", guidancePeriod, "replan this often, and whenever the subgoal is reached [s]");
 	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");
 	writeOption(c, s, "guidance_clearance", guidanceClearance, "the path keeps this much more than the robot radius off obstacles (retried with half, then 0, if no path) [m]");
+	writeOption(c, s, "guidance_overhang_depth", guidanceOverhangDepth, "the plan keeps off cells vision never looked at within this distance of an obstacle only vision found: an overhang's unseen far part (dropped, before the clearance, if that closes every way; 0: off) [m]");
 	writeOption(c, s, "unreachable_after", unreachableAfter, "no path on the grid for this long ends the run as unreachable [s]");
 	writeOption(c, s, "turn_in_place_above_deg", turnInPlaceAboveDeg, "with guidance: turn on the spot while the subgoal is more than this off the heading [deg]");
 	writeOption(c, s, "turn_rate_degps", turnRateDegps, "rate of that turn [deg/s]");

@@ -153,6 +153,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 	GuidanceOptions guidance;
 	guidance.robotRadius = world.robot.radius;
 	guidance.clearance = loop.guidanceClearance;
+	guidance.overhangDepth = loop.guidanceOverhangDepth;
 	guidance.lookahead = loop.guidanceLookahead;
 	guidance.occupiedBelow = loop.occupiedBelow;
 	double nextPlanTime = 0;  // plan at the first step

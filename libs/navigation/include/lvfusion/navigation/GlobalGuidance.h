@@ -11,6 +11,10 @@
 // it, that the robot can reach in a straight line on the grid (a subgoal
 // round a corner would pull a reactive method into the corner).
 //
+// Unobserved cells are free, except round what only vision found: there the
+// plan assumes the overhang goes on into what the cameras have not seen
+// (GuidanceOptions::overhangDepth).
+//
 // No path on the grid means every way to the target is closed by obstacles
 // the robot has seen: the target is unreachable as far as it can know.
 
@@ -28,6 +32,16 @@ struct GuidanceOptions
 	/** Extra growth so the path keeps off obstacles [m]; a plan that fails
 	 * with it is retried with half of it, then without. */
 	double clearance = 0.20;
+	/** The cameras see an overhang (a floating box, a table top) from the
+	 * front: its sides and back, which the laser passes under, are cells
+	 * vision never looked at. The plan keeps off such cells within this
+	 * distance of a cell only vision found occupied, as if the object went
+	 * on that far (the random rooms' floating boxes are up to 0.7 m,
+	 * table tops 0.6-0.8 m deep). Where that closes every way, the plan
+	 * keeps the clearance instead (the clearance's own fall-backs come
+	 * after): measured, a robot squeezed through gaps between assumed parts
+	 * with the bare radius dithered until its timeout (README) [m]; 0: off. */
+	double overhangDepth = 0.6;
 	double lookahead = 1.5;	 //!< the subgoal is at most this far along the path [m]
 	/** A blocked start (the robot brushing an obstacle cell) or goal is
 	 * moved to the nearest traversable cell within this distance [m]. */

@@ -25,6 +25,9 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	double guidancePeriod = 1.0;  //!< replan this often [s] (and when the subgoal is reached)
 	double guidanceLookahead = 1.5;	 //!< the navigator's subgoal is this far along the path [m]
 	double guidanceClearance = 0.20;  //!< the path keeps this much more than the robot's radius off obstacles [m]
+	/** Cameras see an overhang's near faces only; the plan assumes it goes
+	 * on this far into what vision never looked at (GuidanceOptions) [m]. */
+	double guidanceOverhangDepth = 0.6;
 	/** The run ends as "unreachable" when no path exists on the grid for
 	 * this long (a few replans: one bad view does not end a run) [s]. */
 	double unreachableAfter = 3.0;
