@@ -32,19 +32,20 @@ const std::string kTrap =
 	"  - {name: arm_right, pose: [1.9, -1.2, 0], size: [1.6, 0.2, 0.6]}\n";
 const TPoint2D kTrapTarget(4.0, 0.0);
 
-/** A noise-free 360-degree laser scan of the world's solids from `at`,
- * by marching along each ray (the grid only needs the hit points). */
-mrpt::obs::CObservation2DRangeScan scanFrom(const lvf::simulation::World& world, const TPoint2D& at)
+/** A noise-free scan of the world's solids (up to the robot's height) from
+ * `at`, looking along +x, over `aperture` in `n` rays (MRPT's bearings), by
+ * marching along each ray (the grid only needs the hit points). */
+mrpt::obs::CObservation2DRangeScan scanFrom(
+	const lvf::simulation::World& world, const TPoint2D& at, double aperture = 2 * M_PI, size_t n = 720)
 {
 	const nav::WorldCollision solids(world, {0.0, world.robot.height, world.robot.obstacleMinHeight});
 	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = float(2 * M_PI);
+	scan.aperture = float(aperture);
 	scan.maxRange = 10;
-	const size_t n = 720;
 	scan.resizeScan(n);
 	for (size_t i = 0; i < n; i++)
 	{
-		const double a = -M_PI + 2 * M_PI * double(i) / double(n);
+		const double a = scan.getScanAngle(i);
 		double r = 0;
 		while (r < scan.maxRange && solids.clearance({at.x + r * std::cos(a), at.y + r * std::sin(a)}).distance > 0) r += 0.01;
 		scan.setScanRange(i, float(r));
@@ -109,47 +110,6 @@ TEST(GlobalGuidance, TargetSeenWalledInIsUnreachableTargetInOpenSpaceIsNot)
 	EXPECT_EQ(outside.status, nav::Guidance::Status::Path) << outside.detail;
 }
 
-namespace
-{
-/** Range from the origin along bearing `a` to the walls of the room
- * [-1, 5] x [-3, 3]. */
-double toRoomWalls(double a)
-{
-	const double c = std::cos(a), s = std::sin(a);
-	double r = 1e9;
-	if (c > 1e-9) r = std::min(r, 5.0 / c);
-	if (c < -1e-9) r = std::min(r, -1.0 / c);
-	if (s > 1e-9) r = std::min(r, 3.0 / s);
-	if (s < -1e-9) r = std::min(r, -3.0 / s);
-	return r;
-}
-
-/** A scan from the origin over `aperture` centred ahead, with `range(a)`
- * at bearing a. */
-template <typename Range>
-mrpt::obs::CObservation2DRangeScan scanFromOrigin(double aperture, size_t n, Range range)
-{
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = float(aperture);
-	scan.maxRange = 10;
-	scan.resizeScan(n);
-	for (size_t i = 0; i < n; i++)
-	{
-		const double a = -0.5 * aperture + aperture * double(i) / double(n - 1);
-		scan.setScanRange(i, float(range(a)));
-		scan.setScanRangeValidity(i, true);
-	}
-	return scan;
-}
-
-/** Distance from p to the rectangle [x0, x1] x [y0, y1]. */
-double distanceToRectangle(const TPoint2D& p, double x0, double x1, double y0, double y1)
-{
-	const double dx = std::max({x0 - p.x, 0.0, p.x - x1}), dy = std::max({y0 - p.y, 0.0, p.y - y1});
-	return std::hypot(dx, dy);
-}
-}  // namespace
-
 // A box floating over the laser's plane, [2.0, 2.6] x [-0.35, 0.35] (as deep
 // as the guidance assumes overhangs go on), seen by the cameras from the
 // origin: only its near face. Planned round that face alone, the path to the
@@ -158,15 +118,16 @@ double distanceToRectangle(const TPoint2D& p, double x0, double x1, double y0, d
 // vision saw free in front of the face stays free.
 TEST(GlobalGuidance, KeepsOffTheUnseenFarPartOfAnOverhangVisionSawTheFrontOf)
 {
-	const double x0 = 2.0, x1 = 2.6, halfWidth = 0.35;
+	const auto room = lvf::test::worldFromText(lvf::test::roomWorld(""));
+	const auto world = lvf::test::worldFromText(lvf::test::roomWorld(
+		"  - {name: floating, pose: [2.3, 0, 0], size: [0.6, 0.7, 0.3], elevation: 0.6}\n"));
+	const auto& box = world.boxes.back();
 	nav::LocalObstacleGrid grid(-1.5, 5.5, -3.5, 3.5, 0.05, 0.45);
 	const mrpt::poses::CPose2D origin(0, 0, 0);
-	// The laser passes under the box: only the walls.
-	const auto laser = scanFromOrigin(2 * M_PI, 720, toRoomWalls);
-	// The cameras' 70 degrees: the face where a ray meets it, the walls beside.
-	const auto vision = scanFromOrigin(mrpt::DEG2RAD(70.0), 141, [&](double a) {
-		return std::abs(x0 * std::tan(a)) <= halfWidth ? x0 / std::cos(a) : toRoomWalls(a);
-	});
+	// The laser passes under the box: only the room's walls. The cameras'
+	// 70 degrees see the box's near face, and the walls beside it.
+	const auto laser = scanFrom(room, {0, 0});
+	const auto vision = scanFrom(world, {0, 0}, mrpt::DEG2RAD(70.0), 141);
 	for (int k = 0; k < 3; k++) grid.insertLaser(laser, origin), grid.insertVision(vision, origin);
 
 	nav::GuidanceOptions o;
@@ -174,7 +135,7 @@ TEST(GlobalGuidance, KeepsOffTheUnseenFarPartOfAnOverhangVisionSawTheFrontOf)
 	const TPoint2D target(3.3, 0.0);  // just behind the box
 	auto closestApproach = [&](const nav::Guidance& g) {
 		double d = 1e9;
-		for (const auto& p : g.path) d = std::min(d, distanceToRectangle(p, x0, x1, -halfWidth, halfWidth));
+		for (const auto& p : g.path) d = std::min(d, nav::WorldCollision::footprintDistance(box, p));
 		return d;
 	};
 	const auto assuming = nav::planGuidance(grid, {0, 0}, target, o);
