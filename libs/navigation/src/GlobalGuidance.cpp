@@ -102,7 +102,7 @@ Guidance planGuidance(
 	g.subgoal = target;
 	const auto seen = grid.obstacleMap();
 	std::optional<mrpt::maps::COccupancyGridMap2D> assumed;
-	if (o.overhangDepth > 0) assumed = grid.obstacleMapAssumingOverhangDepth(o.overhangDepth);
+	if (o.overhangDepth > 0) grid.assumeOverhangDepth(o.overhangDepth, assumed.emplace(seen));
 	const auto* withOverhangs = assumed ? &*assumed : &seen;
 	// The full safety growth first, then half of it: the reactive methods
 	// slow and dither in gaps that only just fit the robot, so a wider way

@@ -56,9 +56,8 @@ mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMap() const
 	return out;
 }
 
-mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMapAssumingOverhangDepth(double depth) const
+void LocalObstacleGrid::assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& out) const
 {
-	mrpt::maps::COccupancyGridMap2D out = obstacleMap();
 	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
 	cv::Mat1b visionOnly = cv::Mat1b::zeros(H, W);
 	for (int cy = 0; cy < H; cy++)
@@ -75,7 +74,6 @@ mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMapAssumingOverhangDe
 		for (int cx = 0; cx < W; cx++)
 			if (near(cy, cx) && vision[cx] == 0) out.setCell(cx, cy, 0.0f);
 	}
-	return out;
 }
 
 void LocalObstacleGrid::obstaclesNear(

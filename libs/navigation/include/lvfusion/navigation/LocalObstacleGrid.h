@@ -41,11 +41,12 @@ class LocalObstacleGrid
 	 * probability of the two, so a cell is an obstacle there (below
 	 * `occupiedBelow`) exactly when obstacle() says so. */
 	mrpt::maps::COccupancyGridMap2D obstacleMap() const;
-	/** obstacleMap(), plus the cells vision never looked at (its grid's
-	 * prior, untouched) within `depth` of a cell only vision found occupied
-	 * (the laser's grid does not call it an obstacle): an overhang's far
-	 * part, behind the faces the cameras saw, for planners to keep off. */
-	mrpt::maps::COccupancyGridMap2D obstacleMapAssumingOverhangDepth(double depth) const;
+	/** Marks occupied in `map` (an obstacleMap() of this grid) the cells
+	 * vision never looked at (its grid's prior, untouched) within `depth`
+	 * of a cell only vision found occupied (the laser's grid does not call
+	 * it an obstacle): an overhang's far part, behind the faces the cameras
+	 * saw, for planners to keep off. */
+	void assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& map) const;
 
 	/** Cell geometry (both grids share it). */
 	const mrpt::maps::COccupancyGridMap2D& geometry() const { return m_laser; }
