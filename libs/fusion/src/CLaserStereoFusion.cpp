@@ -44,6 +44,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	facetStrayReturns = ini.flag("facet_stray_returns", facetStrayReturns);
 	minFloorAgreement = ini.real("min_floor_agreement", minFloorAgreement, 0, 1);
 	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
+	calibrationNcc = ini.real("calibration_ncc", calibrationNcc, -1, 1);
 	evaluateSearchGridOnly = ini.flag("evaluate_search_grid_only", evaluateSearchGridOnly);
 	ini.rejectUnknownKeys();
 	lines.loadFromConfigFile(source, kLines);
@@ -61,6 +62,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "facet_stray_returns", facetStrayReturns, "model returns that fit no line segment as narrow walls square to their rays");
 	writeOption(c, s, "min_floor_agreement", minFloorAgreement, "less of the model's visible floor consistent in the images than this share: calibration suspect, laser only [0..1]");
 	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more of all judged pixels inconsistent than this share: calibration suspect, laser only [0..1]");
+	writeOption(c, s, "calibration_ncc", calibrationNcc, "for these two checks a judged pixel agrees with the model at this NCC or more (not the evaluation's ncc_threshold) [-1..1]");
 	writeOption(c, s, "evaluate_search_grid_only", evaluateSearchGridOnly, "evaluate the model only at the pixels the depth search reads (its pixel_stride grid): same result there, faster");
 	lines.saveToConfigFile(c, kLines);
 	evaluation.saveToConfigFile(c, kEvaluation);
@@ -139,14 +141,10 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry);
 	});
 
-	using lvf::evaluation::PixelState;
-	const size_t judged = r.evaluation.count(PixelState::Consistent) +
-		r.evaluation.count(PixelState::Inconsistent);
-	const double inconsistent = judged
-		? double(r.evaluation.count(PixelState::Inconsistent)) / double(judged)
-		: 0.0;
+	const double inconsistent = disagreeingShare(r.evaluation, m_options.calibrationNcc);
 	// Every pixel (the evaluation may have judged only the search grid).
-	const FloorAgreement floor = floorAgreement(r.geometry, r.evaluation, m_options.floorHeight, 1);
+	const FloorAgreement floor =
+		floorAgreement(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, 1);
 	const bool floorContradicted = floor.judged >= TOptions::kMinJudgedFloorPixels &&
 		floor.fraction() < m_options.minFloorAgreement;
 	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)

@@ -42,6 +42,13 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		 * (for frames without a judged floor; measured 0.99 with a wrong
 		 * baseline, at most 0.77 on the samples, random rooms and Middlebury). */
 		double maxInconsistentFraction = 0.95;
+		/** For both checks a judged pixel agrees with the model at this NCC
+		 * or more (FloorAgreement.h): the fractions above were measured so,
+		 * whatever the evaluation's own threshold, which decides where to
+		 * search (had the checks used the evaluation's at 0.95, Middlebury
+		 * Recycle's floor would agree at 0.17 and the scene fall back to the
+		 * laser). */
+		double calibrationNcc = 0.9;
 		/** Sampled floor pixels needed to judge the floor at all. */
 		static constexpr size_t kMinJudgedFloorPixels = 100;
 		/** Evaluate the model only at the pixels the depth search reads

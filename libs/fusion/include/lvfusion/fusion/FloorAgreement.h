@@ -9,6 +9,11 @@
 // contradicts the whole floor) from a busy scene (where objects cover only
 // part of it). Measured in test_fusion_pipeline and on Middlebury (see
 // CLaserStereoFusion::TOptions::minFloorAgreement).
+//
+// Both checks take a pixel as agreeing with the model at an NCC of their own
+// (CLaserStereoFusion::TOptions::calibrationNcc), not at the evaluation's
+// threshold: that one decides where to search, and a stricter one there
+// (more pixels searched) must not make a busy scene's floor look wrong.
 
 #include <lvfusion/evaluation/ModelEvaluator.h>
 
@@ -17,17 +22,22 @@ namespace lvf::fusion
 struct FloorAgreement
 {
 	size_t judged = 0;	//!< sampled model-floor pixels judged (consistent or not)
-	size_t consistent = 0;	//!< of those, found consistent with the model
+	size_t consistent = 0;	//!< of those, agreeing with the model (NCC at least the check's)
 
 	/** consistent / judged; 1 when nothing could be judged. */
 	double fraction() const { return judged ? double(consistent) / double(judged) : 1.0; }
 };
 
-/** Counts the evaluation's verdicts on the pixels (every `stride`-th row and
- * column) where the model's nearest surface is the floor at `floorHeight`
- * (robot frame): those whose model disparity is the floor's own. */
+/** Of the judged pixels (every `stride`-th row and column) where the
+ * model's nearest surface is the floor at `floorHeight` (robot frame) --
+ * those whose model disparity is the floor's own --, how many have an NCC of
+ * at least `agreeingNcc`. */
 FloorAgreement floorAgreement(
 	const lvf::evaluation::RectifiedGeometry& geometry, const lvf::evaluation::ModelEvaluation& evaluation,
-	double floorHeight, int stride = 4);
+	double floorHeight, double agreeingNcc, int stride = 4);
+
+/** The share of all judged pixels whose NCC is below `agreeingNcc` (0 when
+ * none was judged). */
+double disagreeingShare(const lvf::evaluation::ModelEvaluation& evaluation, double agreeingNcc);
 
 }  // namespace lvf::fusion
