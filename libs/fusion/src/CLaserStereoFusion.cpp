@@ -1,7 +1,7 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
-#include <lvfusion/fusion/FloorAgreement.h>
+#include <lvfusion/fusion/CalibrationEvidence.h>
 #include <lvfusion/fusion/ModelWalls.h>
 
 #include <lvfusion/common/InputError.h>
@@ -141,16 +141,16 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry);
 	});
 
-	const double inconsistent = disagreeingShare(r.evaluation, m_options.calibrationNcc);
 	// Every pixel (the evaluation may have judged only the search grid).
-	const FloorAgreement floor =
-		floorAgreement(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, 1);
-	const bool floorContradicted = floor.judged >= TOptions::kMinJudgedFloorPixels &&
-		floor.fraction() < m_options.minFloorAgreement;
+	const CalibrationEvidence evidence =
+		calibrationEvidence(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, 1);
+	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
+	const bool floorContradicted = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels &&
+		floorAgreement < m_options.minFloorAgreement;
 	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)
 	{
 		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" +
-			std::to_string(int(100 * floor.fraction())) + "% of the floor consistent, " + std::to_string(int(100 * inconsistent)) +
+			std::to_string(int(100 * floorAgreement)) + "% of the floor consistent, " + std::to_string(int(100 * inconsistent)) +
 			"% of the judged pixels inconsistent): stereo calibration suspect, laser only");
 		fallback.warnings.insert(fallback.warnings.begin(), r.warnings.begin(), r.warnings.end());
 		fallback.segments = std::move(r.segments);

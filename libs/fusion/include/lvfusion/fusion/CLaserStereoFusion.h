@@ -33,7 +33,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		bool facetStrayReturns = true;	//!< see ModelWalls.h
 		/** The calibration (not the world) is taken to be wrong, and the
 		 * frame falls back to the laser, when less than this share of the
-		 * model's floor looks consistent in the images (FloorAgreement.h;
+		 * model's floor looks consistent in the images (CalibrationEvidence.h;
 		 * measured: 0.01 with a wrong baseline; 0.75-0.95 on simulated rooms,
 		 * 0.33 and 0.73 on the Middlebury floors, whose cluttered scenes the
 		 * floor-and-walls model explains only roughly)... */
@@ -43,7 +43,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		 * baseline, at most 0.77 on the samples, random rooms and Middlebury). */
 		double maxInconsistentFraction = 0.95;
 		/** For both checks a judged pixel agrees with the model at this NCC
-		 * or more (FloorAgreement.h): the fractions above were measured so,
+		 * or more (CalibrationEvidence.h): the fractions above were measured so,
 		 * whatever the evaluation's own threshold, which decides where to
 		 * search (had the checks used the evaluation's at 0.95, Middlebury
 		 * Recycle's floor would agree at 0.17 and the scene fall back to the
