@@ -11,10 +11,10 @@ namespace lvf::lines
 {
 using lvf::common::writeOption;
 
-ScanLineExtractor::TOptions ScanLineExtractor::TOptions::forRangeNoise(
-	double rangeStd)
+ScanLineExtractor::TOptions ScanLineExtractor::TOptions::withRangeNoise(
+	double rangeStd) const
 {
-	TOptions o;
+	TOptions o = *this;
 	o.splitDistance = std::max(3.0 * rangeStd, 0.01);
 	o.mergeResidual = std::max(1.5 * rangeStd, 0.005);
 	o.minInfluenceRadius = std::max(2.0 * rangeStd, 0.01);
@@ -25,6 +25,7 @@ void ScanLineExtractor::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
 	lvf::common::IniSection ini(source, section);
+	noiseFromScan = ini.flag("noise_from_scan", noiseFromScan);
 	maxGap = ini.real("max_gap", maxGap, 0.01, 100);
 	minInfluenceRadius = ini.real("min_influence_radius", minInfluenceRadius, 0, 10);
 	influenceWindow = ini.integer("influence_window", influenceWindow, 1, 50);
@@ -40,11 +41,12 @@ void ScanLineExtractor::TOptions::loadFromConfigFile(
 void ScanLineExtractor::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
+	writeOption(c, s, "noise_from_scan", noiseFromScan, "min_influence_radius, split_distance and merge_residual from each scan's stated range noise (its stdError): 2x, 3x, 1.5x it; the values below only for scans that state none");
 	writeOption(c, s, "max_gap", maxGap, "cut sphere-of-influence edges longer than this: always separate clusters [m]");
-	writeOption(c, s, "min_influence_radius", minInfluenceRadius, "radius of influence at least this, ~2x range noise [m]");
+	writeOption(c, s, "min_influence_radius", minInfluenceRadius, "radius of influence at least this, ~2x range noise (see noise_from_scan) [m]");
 	writeOption(c, s, "influence_window", influenceWindow, "neighbours searched on each side, in scan order, for radii and edges [points]");
-	writeOption(c, s, "split_distance", splitDistance, "IEPF: split where a point is farther than this from the chord, ~3x range noise [m]");
-	writeOption(c, s, "merge_residual", mergeResidual, "merge adjacent pieces if their union's RMS residual is below this, ~1.5x range noise [m]");
+	writeOption(c, s, "split_distance", splitDistance, "IEPF: split where a point is farther than this from the chord, ~3x range noise (see noise_from_scan) [m]");
+	writeOption(c, s, "merge_residual", mergeResidual, "merge adjacent pieces if their union's RMS residual is below this, ~1.5x range noise (see noise_from_scan) [m]");
 	writeOption(c, s, "merge_angle_deg", mergeAngleDeg, "... and their directions differ by less than this (or not significantly) [deg]");
 	writeOption(c, s, "merge_gap", mergeGap, "pieces of two clusters merge only across a gap below this (or what spacing and noise explain) [m]");
 	writeOption(c, s, "min_points", minPoints, "segments have at least this many points; smaller pieces only join neighbouring lines [points]");
@@ -61,6 +63,9 @@ ScanLineExtractor::ScanLineExtractor(const TOptions& options)
 std::vector<LineSegment> ScanLineExtractor::extract(
 	const mrpt::obs::CObservation2DRangeScan& scan) const
 {
+	const double stated = scan.stdError;
+	if (m_options.noiseFromScan && std::isfinite(stated) && stated > 0)
+		return ScanLineExtractor(m_options.withRangeNoise(stated)).extract(scanPoints(scan));
 	return extract(scanPoints(scan));
 }
 
