@@ -13,7 +13,7 @@
 // has to decide what a handful of points is: pieces under minPoints give
 // their points to a neighbouring line they fit or are dropped, single
 // returns far off their line are outliers, and the boundary between two
-// lines is put where they fit best (the .cpp says why for each).
+// lines is put where they fit best (src/PieceBuilder.h says why for each).
 
 #include <lvfusion/lines/LineSegment.h>
 #include <lvfusion/lines/ScanPoints.h>
