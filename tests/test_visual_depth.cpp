@@ -7,9 +7,13 @@
 
 #include <gtest/gtest.h>
 #include <lvfusion/depth/DisparityInterval.h>
+#include <lvfusion/depth/WindowStatistics.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/fusion/ScanFusion.h>
 #include <lvfusion/metrics/ScanMetrics.h>
+#include <opencv2/imgproc.hpp>
+
+#include <cstring>
 
 using namespace lvf;
 using lvf::simulation::CStereoLaserSimulator;
@@ -56,6 +60,49 @@ void report(const char* what, const Outcome& o)
 }
 
 }  // namespace
+
+TEST(WindowStatistics, OnARowGridTheSameAsOverTheWholeImageBitForBit)
+{
+	// The focused search asks for the window statistics of its grid's rows
+	// only; the NCC scores divide by them, so they must be the whole-image
+	// box filters' to the last bit, or the search would decide otherwise.
+	// Whole grey levels (as MatchingLevel's images hold): noise, a smooth
+	// picture, and a simulated frame.
+	cv::RNG rng(7);
+	cv::Mat1b noise(120, 160), smooth;
+	rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+	cv::GaussianBlur(noise, smooth, {9, 9}, 3);
+	CStereoLaserSimulator sim(
+		lvf::test::worldFromText(lvf::test::roomWorld("  - {pose: [2.5, 0.3, 0.5], size: [0.4, 0.4, 0.4]}\n")),
+		CStereoLaserSimulator::TOptions());
+	const auto f = sim.simulateNextFrame(false);
+	evaluation::RectifiedStereo stereo;
+	stereo.prepare(*f.stereo, "frame 0");
+	cv::Mat1b frame, right;
+	stereo.rectify(*f.stereo, frame, right);
+	size_t compared = 0;
+	for (const cv::Mat1b& grey : {noise, smooth, frame})
+	{
+		cv::Mat1f image;
+		grey.convertTo(image, CV_32F);
+		for (int half : {1, 2, 5, 7})
+			for (const depth::RowGrid rows : {depth::RowGrid{half, 3}, depth::RowGrid{half + 1, 2}, depth::RowGrid{0, 13}})
+			{
+				cv::Mat1f meanAll, deviationAll, mean, deviation;
+				depth::windowStatistics(image, half, depth::RowGrid{}, meanAll, deviationAll);
+				depth::windowStatistics(image, half, rows, mean, deviation);
+				for (int v = std::max(rows.first, half); v < image.rows - half; v += rows.step)
+					for (int u = half; u < image.cols - half; u++, compared++)
+					{
+						ASSERT_EQ(std::memcmp(&mean(v, u), &meanAll(v, u), sizeof(float)), 0)
+							<< "half " << half << " row " << v << " column " << u << ": " << mean(v, u) << " vs " << meanAll(v, u);
+						ASSERT_EQ(std::memcmp(&deviation(v, u), &deviationAll(v, u), sizeof(float)), 0)
+							<< "half " << half << " row " << v << " column " << u << ": " << deviation(v, u) << " vs " << deviationAll(v, u);
+					}
+			}
+	}
+	EXPECT_GT(compared, 500000u);
+}
 
 TEST(DisparitySet, CriteriaCombineIntoIntervals)
 {

@@ -267,7 +267,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	Result out;
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
-	MatchingLevel full(left, right, half);
+	// Pixels are matched only on the grid's rows: statistics there alone.
+	MatchingLevel full(left, right, half, RowGrid{half, m_options.pixelStride});
 	std::unique_ptr<MatchingLevel> coarse;
 	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
 

@@ -1,6 +1,8 @@
 #include <lvfusion/depth/MatchingLevel.h>
 #include <opencv2/imgproc.hpp>
 
+#include <lvfusion/depth/WindowStatistics.h>
+
 namespace lvf::depth
 {
 namespace
@@ -25,36 +27,22 @@ cv::Mat1f pyramidDown(const cv::Mat1f& image)
 	return asFloat(grey);
 }
 
-void windowStatistics(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& deviation)
-{
-	const cv::Size window(2 * half + 1, 2 * half + 1);
-	cv::blur(image, mean, window);
-	// Squares summed by sqrBoxFilter, the rest in place: the temporaries of
-	// matrix expressions cost time for the same values (both levels of the
-	// pair: 2.3 -> 2.0 ms per box-room frame).
-	cv::Mat variance, meanSquared;
-	cv::sqrBoxFilter(image, variance, CV_32F, window);
-	cv::multiply(mean, mean, meanSquared);
-	cv::subtract(variance, meanSquared, variance);
-	// Rounding can leave a flat window's variance just below 0.
-	cv::max(variance, 0.0, variance);
-	cv::sqrt(variance, deviation);
-}
 }  // namespace
 
-MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h)
+MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h, RowGrid rows)
 	: half(h),
 	  left(std::move(l)),
 	  right(std::move(r)),
 	  forward(left, right, rightMean, rightStd, half),
+	  m_rows(rows),
 	  m_backward(right, left, m_leftMean, m_leftStd, half)
 {
-	windowStatistics(right, half, rightMean, rightStd);
+	windowStatistics(right, half, m_rows, rightMean, rightStd);
 }
 
 void MatchingLevel::needLeftStatistics()
 {
-	if (m_leftMean.empty()) windowStatistics(left, half, m_leftMean, m_leftStd);
+	if (m_leftMean.empty()) windowStatistics(left, half, m_rows, m_leftMean, m_leftStd);
 }
 
 EpipolarScores& MatchingLevel::backward()
@@ -75,13 +63,13 @@ float MatchingLevel::leftStdAt(int v, int u)
 	return m_leftStd(v, u);
 }
 
-MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h)
-	: MatchingLevel(asFloat(l), asFloat(r), h)
+MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid rows)
+	: MatchingLevel(asFloat(l), asFloat(r), h, rows)
 {
 }
 
 MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
-	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h)
+	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{})
 {
 }
 

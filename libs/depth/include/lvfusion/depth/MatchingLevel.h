@@ -1,13 +1,14 @@
 #pragma once
 // One resolution of the rectified pair, ready for window matching along rows:
-// float images, the window mean and deviation of every pixel of both (box
-// filters, once per frame; the left image's when first asked for), and an
-// EpipolarScores each way (left windows
+// float images, the window mean and deviation of every pixel of both, or of
+// the rows it will match from (WindowStatistics.h; once per frame, the left
+// image's when first asked for), and an EpipolarScores each way (left windows
 // against the right row for the search, right windows against the left row
 // for the left-right check). The focused search keeps one at full
 // resolution and, for coarse-to-fine matching, one at half resolution.
 
 #include <lvfusion/depth/EpipolarScores.h>
+#include <lvfusion/depth/WindowStatistics.h>
 #include <opencv2/core.hpp>
 
 namespace lvf::depth
@@ -15,8 +16,10 @@ namespace lvf::depth
 class MatchingLevel
 {
    public:
-	/** Grey images, and the half side of the square matching window. */
-	MatchingLevel(const cv::Mat1b& left, const cv::Mat1b& right, int half);
+	/** Grey images, and the half side of the square matching window. With
+	 * `rows`, the window statistics only on those rows (where a window
+	 * fits), the only ones this level will be asked to match from. */
+	MatchingLevel(const cv::Mat1b& left, const cv::Mat1b& right, int half, RowGrid rows = {});
 	/** The same pair at half resolution (Gaussian pyramid), windows of half
 	 * the side: a window there covers about the same scene. */
 	MatchingLevel(const MatchingLevel& finer, int half);
@@ -35,13 +38,14 @@ class MatchingLevel
 	float leftStdAt(int v, int u);
 
    private:
-	MatchingLevel(cv::Mat1f left, cv::Mat1f right, int half);
+	MatchingLevel(cv::Mat1f left, cv::Mat1f right, int half, RowGrid rows);
 	/** The left image's statistics are computed on first use: the full
 	 * level of a coarse-to-fine search takes its pixels' statistics from
 	 * the evaluation and checks left-right on the coarse level, so it
 	 * mostly never needs them (0.7 ms of a box-room frame). */
 	void needLeftStatistics();
 
+	RowGrid m_rows;
 	cv::Mat1f m_leftMean, m_leftStd;
 	EpipolarScores m_backward;
 };

@@ -1,0 +1,29 @@
+#pragma once
+// The mean and standard deviation of every (2 half + 1)^2 window of an image
+// (MatchingLevel's per-frame statistics, which the NCC scores divide by).
+
+#include <opencv2/core.hpp>
+
+namespace lvf::depth
+{
+/** Rows first, first + step, first + 2 step, ... of an image. */
+struct RowGrid
+{
+	int first = 0, step = 1;
+	bool all() const { return first == 0 && step == 1; }
+};
+
+/** Window mean and deviation at every pixel of `image` (box filters, border
+ * reflected); with a row grid, only at the grid's rows and only where a
+ * whole window fits (columns and rows half .. size - 1 - half) -- every
+ * other value is left undefined. The grid's values are those of the whole
+ * image bit for bit when the image holds whole grey levels (MatchingLevel's
+ * do): its window sums are integers, exact in any order, and scaled and
+ * combined as OpenCV's blur and sqrBoxFilter do (checked by
+ * test_visual_depth; no product is fused into a sum on the default
+ * x86-64 target, as in EpipolarScores' score formula). The focused search
+ * reads the full resolution's statistics only on its pixel grid, a third
+ * of the rows at the default stride. */
+void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f& mean, cv::Mat1f& deviation);
+
+}  // namespace lvf::depth
