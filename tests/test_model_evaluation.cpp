@@ -7,8 +7,11 @@
 #include <gtest/gtest.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
+#include <lvfusion/evaluation/ModelWarp.h>
 #include <mrpt/core/bits_math.h>
 #include <opencv2/imgproc.hpp>
+
+#include <cstring>
 
 using namespace lvf::evaluation;
 using lvf::simulation::CStereoLaserSimulator;
@@ -150,6 +153,48 @@ TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDispar
 	std::cout << corners << " corners; mean row difference " << sumRow / corners
 			  << " px; worst row difference " << worstRow
 			  << " px, worst disparity error " << worstDisparity << " px\n";
+}
+
+TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
+{
+	// warpByModel does by hand what cv::remap does with maps x = u + cxOffset
+	// - d, y = v; the evaluation's NCC is computed from it, so it must be
+	// remap's to the last bit. A simulated frame with the room's model, and
+	// disparities of every kind: fractional, none (0) or negative, sending
+	// the column past either edge of the image.
+	const Scene scene = evaluate(lvf::test::roomWorld("  - {pose: [2.5, 0.3, 0.5], size: [0.4, 0.4, 0.4]}\n"));
+	cv::RNG rng(3);
+	cv::Mat1f odd(scene.right.size());
+	rng.fill(odd, cv::RNG::UNIFORM, -3.0, scene.right.cols + 3.0);
+	for (int v = 0; v < odd.rows; v += 7) odd.row(v).setTo(0);
+	RectifiedGeometry shifted = scene.stereo.geometry();
+	shifted.cxOffset = 12.3;  // as on a Middlebury pair (doffs)
+	size_t compared = 0;
+	for (const auto& [disparity, geometry] :
+		 {std::pair{scene.eval.modelDisparity, scene.stereo.geometry()}, std::pair{odd, shifted}})
+	{
+		cv::Mat1f warped;
+		cv::Mat1b unverifiable;
+		warpByModel(scene.right, disparity, geometry, warped, unverifiable);
+		cv::Mat1f mapX(disparity.size()), mapY(disparity.size()), rightF, expected;
+		for (int v = 0; v < mapX.rows; v++)
+			for (int u = 0; u < mapX.cols; u++)
+			{
+				mapX(v, u) = static_cast<float>(u) - disparity(v, u) + static_cast<float>(geometry.cxOffset);
+				mapY(v, u) = static_cast<float>(v);
+			}
+		scene.right.convertTo(rightF, CV_32F);
+		cv::remap(rightF, expected, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+		for (int v = 0; v < mapX.rows; v++)
+			for (int u = 0; u < mapX.cols; u++, compared++)
+			{
+				ASSERT_EQ(std::memcmp(&warped(v, u), &expected(v, u), sizeof(float)), 0)
+					<< "row " << v << " column " << u << " (x " << mapX(v, u) << "): " << warped(v, u) << " vs " << expected(v, u);
+				const bool outside = disparity(v, u) <= 0 || mapX(v, u) < 0 || mapX(v, u) > mapX.cols - 1;
+				ASSERT_EQ(unverifiable(v, u) != 0, outside) << "row " << v << " column " << u;
+			}
+	}
+	EXPECT_EQ(compared, 2 * scene.right.total());
 }
 
 TEST(ModelEvaluation, FlagsTheFloatingBoxAndNothingElse)
