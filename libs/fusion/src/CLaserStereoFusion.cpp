@@ -133,17 +133,18 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		return 0;
 	});
 	const lvf::evaluation::ModelEvaluator evaluator(m_options.evaluation);
+	// The search's grid starts half a window from the border.
+	const int gridFirst = m_options.evaluateSearchGridOnly ? m_options.evaluation.windowSize / 2 : 0;
+	const int gridStride = m_options.evaluateSearchGridOnly ? m_options.depth.pixelStride : 1;
 	r.evaluation = timed(r.times.evaluate, [&] {
-		// The search starts its grid at half a window from the border.
 		return m_options.evaluateSearchGridOnly
-			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry,
-				  m_options.evaluation.windowSize / 2, m_options.depth.pixelStride)
+			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride)
 			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry);
 	});
 
-	// Every pixel (the evaluation may have judged only the search grid).
-	const CalibrationEvidence evidence =
-		calibrationEvidence(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, 1);
+	// Every judged pixel: the whole image, or the search grid.
+	const CalibrationEvidence evidence = calibrationEvidence(
+		r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, gridFirst, gridStride);
 	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
 	const bool floorContradicted = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels &&
 		floorAgreement < m_options.minFloorAgreement;

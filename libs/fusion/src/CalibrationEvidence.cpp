@@ -9,13 +9,13 @@ using lvf::evaluation::PixelState;
 
 CalibrationEvidence calibrationEvidence(
 	const lvf::evaluation::RectifiedGeometry& g, const lvf::evaluation::ModelEvaluation& evaluation,
-	double floorHeight, double agreeingNcc, int stride)
+	double floorHeight, double agreeingNcc, int first, int stride)
 {
 	CalibrationEvidence out;
 	const Eigen::Matrix3d R = g.leftPose.getRotationMatrix().asEigen();
 	const double height = g.leftPose.z() - floorHeight;	 // camera above the floor [m]
-	for (int v = 0; v < g.size.height; v += stride)
-		for (int u = 0; u < g.size.width; u += stride)
+	for (int v = first; v < g.size.height; v += stride)
+		for (int u = first; u < g.size.width; u += stride)
 		{
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
 			if (state != PixelState::Consistent && state != PixelState::Inconsistent) continue;
