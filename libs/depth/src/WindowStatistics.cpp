@@ -50,8 +50,10 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 			columnSquares[size_t(u)] += sign * (row[u] * row[u]);
 		}
 	};
+	// The grid's first row where a window fits.
+	const int start = rows.first >= half ? rows.first : rows.first + (half - rows.first + rows.step - 1) / rows.step * rows.step;
 	int previous = -1;
-	for (int v = std::max(rows.first, half); v < image.rows - half; v += rows.step)
+	for (int v = start; v < image.rows - half; v += rows.step)
 	{
 		// The column sums over rows v - half .. v + half, slid down from the
 		// previous grid row's where the windows overlap.
