@@ -86,7 +86,7 @@ TEST(WindowStatistics, OnARowGridTheSameAsOverTheWholeImageBitForBit)
 		cv::Mat1f image;
 		grey.convertTo(image, CV_32F);
 		for (int half : {1, 2, 5, 7})
-			for (const depth::RowGrid rows : {depth::RowGrid{half, 3}, depth::RowGrid{half + 1, 2}, depth::RowGrid{0, 13}})
+			for (const depth::RowGrid rows : {depth::RowGrid{half, 1}, depth::RowGrid{half, 3}, depth::RowGrid{half + 1, 2}, depth::RowGrid{0, 13}})
 			{
 				cv::Mat1f meanAll, deviationAll, mean, deviation;
 				depth::windowStatistics(image, half, depth::RowGrid{}, meanAll, deviationAll);

@@ -69,7 +69,9 @@ MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowG
 }
 
 MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
-	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{})
+	// Every row where a window fits (only those are matched from): the
+	// same values, and on a 320x240 level faster than OpenCV's filters.
+	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1})
 {
 }
 

@@ -23,7 +23,9 @@ struct RowGrid
  * test_visual_depth; no product is fused into a sum on the default
  * x86-64 target, as in EpipolarScores' score formula). The focused search
  * reads the full resolution's statistics only on its pixel grid, a third
- * of the rows at the default stride. */
+ * of the rows at the default stride (0.90 -> 0.43 ms per 640x480 frame),
+ * and the half resolution's where a window fits (0.67 -> 0.52 ms for both
+ * images: OpenCV's six whole-image passes cost more at 320x240). */
 void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f& mean, cv::Mat1f& deviation);
 
 }  // namespace lvf::depth
