@@ -1023,14 +1023,15 @@ LogReport runOnLog(const std::string& path)
 		}
 	}
 	LogReport report;
+	// As shipped, the extractor takes the noise-bound thresholds (split 3x,
+	// merge 1.5x) from each scan's stated noise (noise_from_scan); a scan
+	// that states none gets them for the fallback.
+	const ScanLineExtractor fromScan, unstated(ScanLineExtractor::TOptions::forRangeNoise(kFallbackRangeStd));
 	for (const auto& scan : scans)
 	{
-		const double sigma = scan->stdError > 0 && std::isfinite(scan->stdError)
-			? static_cast<double>(scan->stdError)
-			: kFallbackRangeStd;
-		// The defaults are for 5 cm of noise; a log's own noise sets the
-		// thresholds that depend on it (split 3x, merge 1.5x).
-		const ScanLineExtractor extractor(ScanLineExtractor::TOptions::forRangeNoise(sigma));
+		const bool stated = scan->stdError > 0 && std::isfinite(scan->stdError);
+		const double sigma = stated ? static_cast<double>(scan->stdError) : kFallbackRangeStd;
+		const ScanLineExtractor& extractor = stated ? fromScan : unstated;
 		const auto t0 = std::chrono::steady_clock::now();
 		const auto segments = extractor.extract(*scan);
 		report.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
