@@ -6,6 +6,7 @@
 #include "TestWorlds.h"
 
 #include <gtest/gtest.h>
+#include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/WindowStatistics.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
@@ -102,6 +103,48 @@ TEST(WindowStatistics, OnARowGridTheSameAsOverTheWholeImageBitForBit)
 			}
 	}
 	EXPECT_GT(compared, 500000u);
+}
+
+TEST(CrossTerms, EqualTheWindowSumsOfProductsOnEveryPath)
+{
+	// The cross terms come from 16-bit multiply-adds on neighbour pairs
+	// (AVX2 where the CPU has it) or one product at a time: both must be
+	// the window's sum of left x right grey levels exactly, for every
+	// window size the search accepts and for stretches of every length
+	// (whole vector blocks, their tails, single columns), up to both
+	// images' edges. The extremes 0 and 255 are in the picture.
+	cv::RNG rng(11);
+	cv::Mat1b leftGrey(40, 90), rightGrey(40, 90);
+	rng.fill(leftGrey, cv::RNG::UNIFORM, 0, 256);
+	rng.fill(rightGrey, cv::RNG::UNIFORM, 0, 256);
+	leftGrey(cv::Rect(0, 0, 90, 4)).setTo(255);
+	rightGrey(cv::Rect(0, 0, 90, 4)).setTo(255);
+	cv::Mat1f left, right;
+	leftGrey.convertTo(left, CV_32F);
+	rightGrey.convertTo(right, CV_32F);
+	const cv::Mat1i leftPairs = depth::neighbourPairs(left), rightPairs = depth::neighbourPairs(right);
+	size_t compared = 0;
+	for (int half = 1; half <= 9; half++)
+		for (int v = half; v < left.rows - half; v += 7)
+			for (int u : {half, 45, left.cols - 1 - half})
+				for (int n : {1, 7, 8, 9, 16, 23, 32, 41, 90 - 2 * half})
+				{
+					const int x0 = std::max(half, std::min(37, right.cols - half - n));
+					if (x0 + n - 1 > right.cols - 1 - half) continue;
+					std::vector<int32_t> fast(static_cast<size_t>(n)), plain(static_cast<size_t>(n));
+					depth::crossTerms(leftPairs, rightPairs, u, v, x0, n, half, fast.data());
+					depth::crossTermsPlain(leftPairs, rightPairs, u, v, x0, n, half, plain.data());
+					for (int i = 0; i < n; i++, compared++)
+					{
+						int64_t expected = 0;
+						for (int dy = -half; dy <= half; dy++)
+							for (int dx = -half; dx <= half; dx++)
+								expected += int64_t(leftGrey(v + dy, u + dx)) * rightGrey(v + dy, x0 + i + dx);
+						ASSERT_EQ(fast[size_t(i)], expected) << "half " << half << " at (" << u << ", " << v << ") column " << x0 + i;
+						ASSERT_EQ(plain[size_t(i)], expected) << "half " << half << " at (" << u << ", " << v << ") column " << x0 + i;
+					}
+				}
+	EXPECT_GT(compared, 10000u);
 }
 
 TEST(DisparitySet, CriteriaCombineIntoIntervals)

@@ -1,3 +1,4 @@
+#include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/EpipolarScores.h>
 
 #include <algorithm>
@@ -14,19 +15,19 @@ namespace
 // noise divided by almost nothing.
 constexpr float kMinRightStd = 1.0f;  // [grey levels]
 constexpr float kNotComputed = std::numeric_limits<float>::quiet_NaN();
-/** Floats in the widest vector the cross-term loop is built for (AVX2). */
+/** Columns in the cross terms' vector blocks (CrossTerms.cpp: eight 32-bit sums). */
 constexpr int kVectorWidth = 8;
 }  // namespace
 
 EpipolarScores::EpipolarScores(
-	const cv::Mat1f& left, const cv::Mat1f& right, const cv::Mat1f& rightMean,
+	const cv::Mat1i& leftPairs, const cv::Mat1i& rightPairs, const cv::Mat1f& rightMean,
 	const cv::Mat1f& rightStd, int half)
-	: m_left(left),
-	  m_right(right),
+	: m_leftPairs(leftPairs),
+	  m_rightPairs(rightPairs),
 	  m_rightMean(rightMean),
 	  m_rightStd(rightStd),
 	  m_half(half),
-	  m_scores(static_cast<size_t>(right.cols), kNotComputed)
+	  m_scores(static_cast<size_t>(rightPairs.cols), kNotComputed)
 {
 }
 
@@ -44,17 +45,9 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 	m_leftStd = leftStd;
 }
 
-// The cross-term loop is most of the search's time. The default x86-64
-// target runs its 8-float vectors as pairs of SSE registers; an AVX2 clone,
-// picked at load time where the CPU has AVX2 (a feature test: "arch=..."
-// clones test the CPU model and miss newer ones), as single registers. The
-// sums are the same bit for bit: both levels of the pair hold whole grey
-// levels (MatchingLevel rounds the half-resolution one), so for windows up
-// to 15 x 15 (default 11) every product and partial sum is an integer below
-// 2^24, which float holds exactly, and neither the order of the additions
-// (partial sums in chains, below) nor the CPU can change them. Only this
-// loop is cloned: the score formula after it must round the same way
-// everywhere.
+// The score formula is cloned for AVX2 (picked at load time where the CPU
+// has it; a feature test: "arch=..." clones test the CPU model and miss
+// newer ones).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define LVF_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
@@ -63,98 +56,11 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 
 namespace
 {
-// Inlined into each clone of crossTerms, so that it is built for each target.
-#define LVF_ALWAYS_INLINE inline __attribute__((always_inline))
-
 /** Eight floats, one AVX2 register (two SSE ones in the default clone).
- * GCC's (and Clang's) vector extension: left to itself the compiler
- * vectorised the wrong loop (across the window's columns, with shuffles).
- * Loaded and stored with memcpy: no alignment assumed. */
+ * GCC's (and Clang's) vector extension. Loaded and stored with memcpy: no
+ * alignment assumed. */
 typedef float Floats8 __attribute__((vector_size(32)));
-/** Four floats, one SSE register, and their comparison masks: the
- * default target's own width (wider vectors' masks were scalarised). */
-typedef float Floats4 __attribute__((vector_size(16)));
-typedef int32_t Ints4 __attribute__((vector_size(16)));
 typedef int32_t Ints8 __attribute__((vector_size(32)));
-
-/** out[k] = sum over the window of left(u, v) x right(x + k, v), k < 8 V,
- * for a window of half side Half (a template argument, so that the loop
- * along the window's row unrolls and every partial sum gets a register).
- * The sums stay in registers for the whole window: summed into memory,
- * every product cost a load and a store of its sum besides its own load.
- * Each 8-column block keeps several partial sums, one per column of the
- * window by turns, so that several additions are in flight at once: with
- * one sum per block every product waited for the one before (4 cycles),
- * and the 8-column blocks -- every full-resolution refinement -- ran at a
- * quarter of the adder's rate. */
-template <int V, int Half>
-LVF_ALWAYS_INLINE void crossBlock(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x, float* out)
-{
-	constexpr int Width = 2 * Half + 1;
-	constexpr int Chains = std::min(Width, 8 / V);
-	Floats8 sums[Chains][V] = {};
-	for (int dy = -Half; dy <= Half; dy++)
-	{
-		const float* l = left.ptr<float>(v + dy) + u - Half;
-		const float* r = right.ptr<float>(v + dy) + x - Half;
-#pragma GCC unroll 16
-		for (int dx = 0; dx < Width; dx++)
-		{
-			const Floats8 weight = Floats8{} + l[dx];
-			for (int j = 0; j < V; j++)
-			{
-				Floats8 column;
-				std::memcpy(&column, r + dx + 8 * j, sizeof column);
-				sums[dx % Chains][j] += weight * column;
-			}
-		}
-	}
-	for (int c = 1; c < Chains; c++)
-		for (int j = 0; j < V; j++) sums[0][j] += sums[c][j];
-	std::memcpy(out, sums[0], sizeof sums[0]);
-}
-
-/** The same for one column (the stretch's tail). */
-LVF_ALWAYS_INLINE float crossColumn(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x, int half)
-{
-	float sum = 0;
-	for (int dy = -half; dy <= half; dy++)
-	{
-		const float* l = left.ptr<float>(v + dy) + u - half;
-		const float* r = right.ptr<float>(v + dy) + x - half;
-		for (int dx = 0; dx <= 2 * half; dx++) sum += l[dx] * r[dx];
-	}
-	return sum;
-}
-
-/** acc[i] = sum over the window of left(u, v) x right(x0 + i, v), i < n:
- * blocks of 32, 16 and 8 columns, single columns for the rest. */
-template <int Half>
-LVF_ALWAYS_INLINE void crossTermsOf(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x0, int n, float* acc)
-{
-	int i = 0;
-	for (; i + 32 <= n; i += 32) crossBlock<4, Half>(left, right, u, v, x0 + i, acc + i);
-	for (; i + 16 <= n; i += 16) crossBlock<2, Half>(left, right, u, v, x0 + i, acc + i);
-	for (; i + 8 <= n; i += 8) crossBlock<1, Half>(left, right, u, v, x0 + i, acc + i);
-	for (; i < n; i++) acc[i] = crossColumn(left, right, u, v, x0 + i, Half);
-}
-
-LVF_VECTOR_CLONES
-void crossTerms(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x0, int n, int half, float* acc)
-{
-	switch (half)
-	{
-		case 1: return crossTermsOf<1>(left, right, u, v, x0, n, acc);
-		case 2: return crossTermsOf<2>(left, right, u, v, x0, n, acc);
-		case 3: return crossTermsOf<3>(left, right, u, v, x0, n, acc);
-		case 4: return crossTermsOf<4>(left, right, u, v, x0, n, acc);
-		case 5: return crossTermsOf<5>(left, right, u, v, x0, n, acc);
-		case 6: return crossTermsOf<6>(left, right, u, v, x0, n, acc);
-		case 7: return crossTermsOf<7>(left, right, u, v, x0, n, acc);
-		default:  // windows above 15 x 15 (not exact in float anyway): a column at a time
-			for (int i = 0; i < n; i++) acc[i] = crossColumn(left, right, u, v, x0 + i, half);
-	}
-}
 
 /** scores[i] = NCC of the left window with the right one at column i, from
  * the cross sums and both windows' statistics; -1 where the right window is
@@ -166,14 +72,16 @@ void crossTerms(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int
  * FMA anyway), and the same scores come out on every CPU. */
 LVF_VECTOR_CLONES __attribute__((optimize("fp-contract=off")))
 void nccScores(
-	const float* sums, const float* means, const float* deviations, int n, float area, float leftMean,
+	const int32_t* sums, const float* means, const float* deviations, int n, float area, float leftMean,
 	float leftStd, float* scores)
 {
 	int i = 0;
 	for (; i + 8 <= n; i += 8)
 	{
-		Floats8 s, m, d;
-		std::memcpy(&s, sums + i, sizeof s);
+		Ints8 integers;
+		Floats8 m, d;
+		std::memcpy(&integers, sums + i, sizeof integers);
+		const Floats8 s = __builtin_convertvector(integers, Floats8);
 		std::memcpy(&m, means + i, sizeof m);
 		std::memcpy(&d, deviations + i, sizeof d);
 		const Floats8 ncc = (s / area - leftMean * m) / (leftStd * d);
@@ -183,7 +91,7 @@ void nccScores(
 	}
 	for (; i < n; i++)
 	{
-		const float ncc = (sums[i] / area - leftMean * means[i]) / (leftStd * deviations[i]);
+		const float ncc = (static_cast<float>(sums[i]) / area - leftMean * means[i]) / (leftStd * deviations[i]);
 		scores[i] = deviations[i] < kMinRightStd ? -1.f : ncc;
 	}
 }
@@ -205,8 +113,8 @@ void EpipolarScores::compute(int x0, int x1)
 	x0 = std::max(x1 - padded + 1, firstColumn());
 	const int n = x1 - x0 + 1;
 	m_cross.resize(static_cast<size_t>(n));
-	float* acc = m_cross.data();
-	crossTerms(m_left, m_right, m_u, m_v, x0, n, m_half, acc);
+	int32_t* acc = m_cross.data();
+	crossTerms(m_leftPairs, m_rightPairs, m_u, m_v, x0, n, m_half, acc);
 	// Columns inside the stretch that were scored before get the same score
 	// again: cheaper than testing each, and the loop stays branch-free.
 	nccScores(acc, m_rightMean.ptr<float>(m_v) + x0, m_rightStd.ptr<float>(m_v) + x0, n,

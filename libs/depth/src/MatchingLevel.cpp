@@ -1,3 +1,4 @@
+#include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/MatchingLevel.h>
 #include <opencv2/imgproc.hpp>
 
@@ -14,10 +15,9 @@ cv::Mat1f asFloat(const cv::Mat1b& image)
 	return out;
 }
 
-/** Half resolution, rounded to whole grey levels: then every window's cross
- * sum is an integer below 2^24, exact in float whatever the order of its
- * additions (EpipolarScores sums in several chains, differently for
- * different stretches), so a column scores the same however it was reached. */
+/** Half resolution, rounded to whole grey levels: the cross terms multiply
+ * 16-bit integers (CrossTerms.h), and the window statistics' sums are
+ * integers, exact in float whatever the order of their additions. */
 cv::Mat1f pyramidDown(const cv::Mat1f& image)
 {
 	cv::Mat1f smoothed;
@@ -33,9 +33,11 @@ MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h, RowGrid rows)
 	: half(h),
 	  left(std::move(l)),
 	  right(std::move(r)),
-	  forward(left, right, rightMean, rightStd, half),
+	  leftPairs(neighbourPairs(left)),
+	  rightPairs(neighbourPairs(right)),
+	  forward(leftPairs, rightPairs, rightMean, rightStd, half),
 	  m_rows(rows),
-	  m_backward(right, left, m_leftMean, m_leftStd, half)
+	  m_backward(rightPairs, leftPairs, m_leftMean, m_leftStd, half)
 {
 	windowStatistics(right, half, m_rows, rightMean, rightStd);
 }

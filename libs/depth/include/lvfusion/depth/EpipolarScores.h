@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include <vector>
@@ -20,10 +21,11 @@ namespace lvf::depth
 class EpipolarScores
 {
    public:
-	/** All images float; means and standard deviations over the
-	 * (2 half + 1)^2 window (per frame, so that no score takes a root). */
+	/** Both images as neighbour pairs (CrossTerms.h); the right one's means
+	 * and standard deviations over the (2 half + 1)^2 window (per frame, so
+	 * that no score takes a root). */
 	EpipolarScores(
-		const cv::Mat1f& left, const cv::Mat1f& right, const cv::Mat1f& rightMean,
+		const cv::Mat1i& leftPairs, const cv::Mat1i& rightPairs, const cv::Mat1f& rightMean,
 		const cv::Mat1f& rightStd, int half);
 
 	/** Starts a new left pixel, whose window has this mean and std. */
@@ -103,7 +105,7 @@ class EpipolarScores
 	}
 
 	int firstColumn() const { return m_half; }
-	int lastColumn() const { return m_right.cols - 1 - m_half; }
+	int lastColumn() const { return m_rightPairs.cols - 1 - m_half; }
 	size_t evaluations() const { return m_evaluations; }
 
    private:
@@ -116,8 +118,8 @@ class EpipolarScores
 	}
 
 	static constexpr int kBlock = 8;  //!< columns scored together on a miss
-	const cv::Mat1f& m_left;
-	const cv::Mat1f& m_right;
+	const cv::Mat1i& m_leftPairs;
+	const cv::Mat1i& m_rightPairs;
 	const cv::Mat1f& m_rightMean;
 	const cv::Mat1f& m_rightStd;
 	int m_half, m_u = 0, m_v = 0;
@@ -128,7 +130,7 @@ class EpipolarScores
 	 * so far have made), so that the walks along a line scored already do
 	 * not test every column's state first. */
 	int m_spanFirst = 0, m_spanLast = -1;
-	std::vector<float> m_cross;	 // scratch: cross terms of a stretch
+	std::vector<int32_t> m_cross;	 // scratch: cross terms of a stretch
 	size_t m_evaluations = 0;
 };
 

@@ -2,7 +2,8 @@
 // One resolution of the rectified pair, ready for window matching along rows:
 // float images, the window mean and deviation of every pixel of both, or of
 // the rows it will match from (WindowStatistics.h; once per frame, the left
-// image's when first asked for), and an EpipolarScores each way (left windows
+// image's when first asked for), both as neighbour pairs for the cross terms
+// integer multiply-adds (CrossTerms.h), and an EpipolarScores each way (left windows
 // against the right row for the search, right windows against the left row
 // for the left-right check). The focused search keeps one at full
 // resolution and, for coarse-to-fine matching, one at half resolution.
@@ -28,6 +29,7 @@ class MatchingLevel
 
 	const int half;
 	cv::Mat1f left, right;
+	cv::Mat1i leftPairs, rightPairs;  //!< both as neighbour pairs (CrossTerms.h)
 	cv::Mat1f rightMean, rightStd;
 	EpipolarScores forward;	 //!< a left window against the right row
 
