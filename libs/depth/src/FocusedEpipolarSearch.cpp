@@ -109,24 +109,52 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 
 namespace
 {
-/** NCC of the (2 half + 1)^2 windows centred at left (u, v) and right (x, v). */
-float windowNcc(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, int x, int half)
+/** NCC of the (2 half + 1)^2 window centred at left (u, v) against right
+ * windows on its row, from the neighbour-pair images (CrossTerms.h): the
+ * left window's sums once for all, every sum an exact integer, the formula
+ * in double. A right window not wholly inside the image scores -1. */
+class CoreWindowNcc
 {
-	double sl = 0, sr = 0, sll = 0, srr = 0, slr = 0;
-	for (int dy = -half; dy <= half; dy++)
+   public:
+	CoreWindowNcc(const MatchingLevel& level, int u, int v, int half)
+		: m_level(level), m_u(u), m_v(v), m_half(half)
 	{
-		const float* l = left.ptr<float>(v + dy) + u;
-		const float* r = right.ptr<float>(v + dy) + x;
-		for (int dx = -half; dx <= half; dx++)
+		for (int dy = -half; dy <= half; dy++)
 		{
-			const double a = l[dx], b = r[dx];
-			sl += a, sr += b, sll += a * a, srr += b * b, slr += a * b;
+			const int32_t* l = level.leftPairs.ptr<int32_t>(v + dy) + u;
+			for (int dx = -half; dx <= half; dx++)
+			{
+				const int32_t a = l[dx] & 0xFFFF;
+				m_sumLeft += a, m_sumLeftSquares += a * a;
+			}
 		}
 	}
-	const double n = (2 * half + 1) * (2 * half + 1);
-	const double cov = slr - sl * sr / n, varL = sll - sl * sl / n, varR = srr - sr * sr / n;
-	return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
-}
+
+	float at(int x) const
+	{
+		if (x - m_half < 0 || x + m_half >= m_level.rightPairs.cols) return -1.f;
+		int32_t sr = 0, srr = 0, slr = 0;
+		for (int dy = -m_half; dy <= m_half; dy++)
+		{
+			const int32_t* l = m_level.leftPairs.ptr<int32_t>(m_v + dy) + m_u;
+			const int32_t* r = m_level.rightPairs.ptr<int32_t>(m_v + dy) + x;
+			for (int dx = -m_half; dx <= m_half; dx++)
+			{
+				const int32_t a = l[dx] & 0xFFFF, b = r[dx] & 0xFFFF;
+				sr += b, srr += b * b, slr += a * b;
+			}
+		}
+		const double n = (2 * m_half + 1) * (2 * m_half + 1);
+		const double sl = m_sumLeft, sll = m_sumLeftSquares;
+		const double cov = slr - sl * sr / n, varL = sll - sl * sl / n, varR = srr - double(sr) * sr / n;
+		return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
+	}
+
+   private:
+	const MatchingLevel& m_level;
+	int m_u, m_v, m_half;
+	int32_t m_sumLeft = 0, m_sumLeftSquares = 0;
+};
 
 }  // namespace
 
@@ -181,15 +209,15 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	const int xModel = q.modelDisparity > 0 ? static_cast<int>(std::lround(q.column(q.modelDisparity))) : -1;
 	if (m_options.coreWindow > 0)
 	{
-		const int coreHalf = m_options.coreWindow / 2;
-		const float core = windowNcc(full.left, full.right, q.u, q.v, bestX, coreHalf);
+		const CoreWindowNcc coreWindow(full, q.u, q.v, m_options.coreWindow / 2);
+		const float core = coreWindow.at(bestX);
 		bool modelExplainsCore = false;
 		if (q.modelDisparity > 0 && core >= m_options.coreAcceptNcc)
 		{
 			// Strictly better: the match's own column may be among these
 			// (an obstacle just in front of a far wall lies that close).
 			for (int x = xModel - 1; x <= xModel + 1 && !modelExplainsCore; x++)
-				modelExplainsCore = windowNcc(full.left, full.right, q.u, q.v, x, coreHalf) > core;
+				modelExplainsCore = coreWindow.at(x) > core;
 		}
 		if (core < m_options.coreAcceptNcc || modelExplainsCore)
 		{
