@@ -5,6 +5,7 @@
 #include "TestWorlds.h"
 
 #include <gtest/gtest.h>
+#include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <lvfusion/evaluation/ModelWarp.h>
@@ -197,6 +198,61 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 	EXPECT_EQ(compared, 2 * scene.right.total());
 }
 
+TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
+{
+	// The grid evaluation's NCC comes from these integer sums; they stand in
+	// for integral images in double, which were exact, so they must be the
+	// true sums exactly. Its premise: warpByModel's values are whole
+	// multiples of 1/32 grey level. A simulated frame warped by its model and
+	// by random disparities (columns past the edges: unverifiable pixels),
+	// windows of every size the evaluation accepts, rows visited in steps
+	// that slide the sums and steps that start them afresh.
+	const Scene scene = evaluate(lvf::test::roomWorld("  - {pose: [2.5, 0.3, 0.5], size: [0.4, 0.4, 0.4]}\n"));
+	cv::RNG rng(5);
+	cv::Mat1f odd(scene.right.size());
+	rng.fill(odd, cv::RNG::UNIFORM, -3.0, scene.right.cols + 3.0);
+	size_t compared = 0;
+	for (const cv::Mat1f& disparity : {scene.eval.modelDisparity, odd})
+	{
+		cv::Mat1f warped;
+		cv::Mat1b unverifiable;
+		warpByModel(scene.right, disparity, scene.stereo.geometry(), warped, unverifiable);
+		for (int v = 0; v < warped.rows; v++)
+			for (int u = 0; u < warped.cols; u++)
+				ASSERT_EQ(warped(v, u) * 32.f, std::round(warped(v, u) * 32.f)) << "row " << v << " column " << u;
+		for (int half : {1, 2, 5, 7, 15})
+		{
+			GridWindowSums sums(scene.left, warped, unverifiable, half);
+			std::vector<int> rows;
+			for (int v = half, step = 1; v < warped.rows - half; v += step, step = step % 41 + 3) rows.push_back(v);
+			rows.push_back(half + 2);  // backwards: afresh
+			for (int v : rows)
+			{
+				sums.moveTo(v);
+				for (int u = half; u < warped.cols - half; u += 37, compared++)
+				{
+					double l = 0, ll = 0, w = 0, ww = 0, lw = 0, bad = 0;
+					for (int dv = -half; dv <= half; dv++)
+						for (int du = -half; du <= half; du++)
+						{
+							const double a = scene.left(v + dv, u + du), b = warped(v + dv, u + du);
+							l += a, ll += a * a, w += b, ww += b * b, lw += a * b;
+							bad += unverifiable(v + dv, u + du) != 0;
+						}
+					const GridWindowSums::Sums got = sums.at(u);
+					ASSERT_EQ(double(got.l), l) << "half " << half << " at (" << u << ", " << v << ")";
+					ASSERT_EQ(double(got.ll), ll) << "half " << half << " at (" << u << ", " << v << ")";
+					ASSERT_EQ(double(got.w32), 32 * w) << "half " << half << " at (" << u << ", " << v << ")";
+					ASSERT_EQ(double(got.ww1024), 1024 * ww) << "half " << half << " at (" << u << ", " << v << ")";
+					ASSERT_EQ(double(got.lw32), 32 * lw) << "half " << half << " at (" << u << ", " << v << ")";
+					ASSERT_EQ(double(got.unverifiable), bad) << "half " << half << " at (" << u << ", " << v << ")";
+				}
+			}
+		}
+	}
+	EXPECT_GT(compared, 4000u);
+}
+
 TEST(ModelEvaluation, FlagsTheFloatingBoxAndNothingElse)
 {
 	// A textured box floating at 0.5..0.9 m, 2 m ahead: not in the model.
@@ -252,8 +308,8 @@ TEST(ModelEvaluation, UntexturedSurfacesAreNotJudged)
 TEST(ModelEvaluation, GridEvaluationJudgesItsPixelsLikeTheWholeImage)
 {
 	// The floating box scene: the grid evaluation must reproduce the whole
-	// image's judgement at its pixels (only rounding differs: integral
-	// images in double against float box filters) and still flag the box.
+	// image's judgement at its pixels (only rounding differs: exact window
+	// sums against float box filters) and still flag the box.
 	const Scene s = evaluate(lvf::test::roomWorld("  - {pose: [2.0, 0.2, 0], size: [0.5, 0.6, 0.4], elevation: 0.5}\n"));
 	const int half = 5, stride = 3;
 	const ModelEvaluation grid = ModelEvaluator().evaluateGrid(

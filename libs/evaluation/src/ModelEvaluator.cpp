@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <lvfusion/evaluation/ModelWarp.h>
@@ -35,17 +36,6 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "or below this, whatever the noise [grey levels]");
 }
 
-namespace
-{
-/** Sum over the (2 half + 1)^2 window centred on (v, u) of an integral image. */
-template <typename T>
-double windowSum(const cv::Mat_<T>& integral, int v, int u, int half)
-{
-	const int v0 = v - half, v1 = v + half + 1, u0 = u - half, u1 = u + half + 1;
-	return double(integral(v1, u1)) - double(integral(v0, u1)) - double(integral(v1, u0)) +
-		double(integral(v0, u0));
-}
-}  // namespace
 
 ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Mat1b& left, const cv::Mat1b& right,
@@ -111,19 +101,8 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	cv::Mat1b unverifiable;
 	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
 
-	// Window sums from integral images: a grid of one pixel in `stride`^2
-	// needs too few windows for whole-image box filters to pay. Doubles,
-	// because sums of squares over a 640x480 image overflow float's 24 bits.
-	cv::Mat1f L;
-	left.convertTo(L, CV_32F);
-	cv::Mat1d sumLL, sumW, sumWW, sumLW;
-	cv::Mat1i sumL, sumBad;
-	// The grey levels' sums are integers below 2^31: exact in int, from the 8-bit image.
-	cv::integral(left, sumL, sumLL, CV_32S, CV_64F);
-	cv::integral(warped, sumW, sumWW, CV_64F, CV_64F);
-	cv::integral(L.mul(warped), sumLW, CV_64F);
-	cv::integral(unverifiable, sumBad, CV_32S);
-
+	// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
+	GridWindowSums sums(left, warped, unverifiable, half);
 	out.ncc = cv::Mat1f::zeros(size);
 	out.leftMean = cv::Mat1f::zeros(size);
 	out.leftStd = cv::Mat1f::zeros(size);
@@ -131,26 +110,31 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	const double area = double(m_options.windowSize * m_options.windowSize);
 	const double minVar = out.textureGate * out.textureGate;
 	for (int v = first; v < size.height - half; v += stride)
+	{
+		sums.moveTo(v);
 		for (int u = first; u < size.width - half; u += stride)
 		{
-			// The same rules, in the same order, as evaluate().
-			const double meanL = windowSum(sumL, v, u, half) / area;
-			const double meanW = windowSum(sumW, v, u, half) / area;
-			const double varL = std::max(windowSum(sumLL, v, u, half) / area - meanL * meanL, 0.0);
-			const double varW = std::max(windowSum(sumWW, v, u, half) / area - meanW * meanW, 0.0);
+			// The same rules, in the same order, as evaluate(). W's sums
+			// come in 1/32 grey levels: scaling by powers of two is exact.
+			const GridWindowSums::Sums w = sums.at(u);
+			const double meanL = double(w.l) / area;
+			const double meanW = double(w.w32) / 32.0 / area;
+			const double varL = std::max(double(w.ll) / area - meanL * meanL, 0.0);
+			const double varW = std::max(double(w.ww1024) / 1024.0 / area - meanW * meanW, 0.0);
 			const double ncc = varW < minVar
 				? 0.0
-				: (windowSum(sumLW, v, u, half) / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
+				: (double(w.lw32) / 32.0 / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
 			out.leftMean(v, u) = static_cast<float>(meanL);
 			out.leftStd(v, u) = static_cast<float>(std::sqrt(varL));
 			out.ncc(v, u) = static_cast<float>(ncc);
 			PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
 			if (varL < minVar) s = PixelState::Untextured;
-			if (windowSum(sumBad, v, u, half) > 0) s = PixelState::Unverifiable;
+			if (w.unverifiable > 0) s = PixelState::Unverifiable;
 			if (modelDisparity(v, u) <= 0 && varL >= minVar) s = PixelState::Unmodelled;
 			out.state(v, u) = static_cast<uint8_t>(s);
 			out.counts[static_cast<size_t>(s)]++;
 		}
+	}
 	out.counts[static_cast<size_t>(PixelState::NotEvaluated)] =
 		size.area() - std::accumulate(out.counts.begin(), out.counts.end(), size_t{0});
 	return out;

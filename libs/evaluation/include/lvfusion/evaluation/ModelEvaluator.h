@@ -9,8 +9,9 @@
 // window size. Windows without texture cannot be judged and are gated out.
 //
 // The focused search (stage 4) reads the evaluation only on its pixel grid;
-// evaluateGrid() judges just those pixels, from integral images (four
-// look-ups per window sum), at a fraction of the whole image's cost.
+// evaluateGrid() judges just those pixels, from exact integer window sums
+// kept for the grid's rows only (GridWindowSums.h), at a fraction of the
+// whole image's cost.
 
 #include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/RectifiedStereo.h>
