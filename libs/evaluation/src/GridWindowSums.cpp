@@ -78,8 +78,11 @@ void GridWindowSums::moveTo(int v)
 		for (int r = v - m_half; r <= v + m_half; r++) addRow(r, +1);
 	}
 	m_row = v;
-	for (int q = 0; q < kQuantities; q++)
-		for (size_t x = 0; x < m_columns[q].size(); x++) m_prefix[q][x + 1] = m_prefix[q][x] + m_columns[q][x];
+	// All six running sums in one pass: six independent chains of additions
+	// (one quantity at a time, each addition waited for the one before).
+	int64_t running[kQuantities] = {};
+	for (size_t x = 0; x < m_columns[0].size(); x++)
+		for (int q = 0; q < kQuantities; q++) m_prefix[q][x + 1] = running[q] += m_columns[q][x];
 }
 
 GridWindowSums::Sums GridWindowSums::at(int u) const
