@@ -26,9 +26,6 @@ cv::Mat1i neighbourPairs(const cv::Mat1f& image)
 
 namespace
 {
-/** The grey level a pair word starts with. */
-inline int32_t firstOf(int32_t pair) { return pair & 0xFFFF; }
-
 int32_t crossColumn(const cv::Mat1i& leftPairs, const cv::Mat1i& rightPairs, int u, int v, int x, int half)
 {
 	int32_t sum = 0;
@@ -36,7 +33,7 @@ int32_t crossColumn(const cv::Mat1i& leftPairs, const cv::Mat1i& rightPairs, int
 	{
 		const int32_t* l = leftPairs.ptr<int32_t>(v + dy) + u;
 		const int32_t* r = rightPairs.ptr<int32_t>(v + dy) + x;
-		for (int dx = -half; dx <= half; dx++) sum += firstOf(l[dx]) * firstOf(r[dx]);
+		for (int dx = -half; dx <= half; dx++) sum += pixelOf(l[dx]) * pixelOf(r[dx]);
 	}
 	return sum;
 }
@@ -64,7 +61,7 @@ LVF_AVX2_INLINE void pairBlock(
 #pragma GCC unroll 8
 		for (int p = 0; p <= Half; p++)
 		{
-			const int32_t word = p < Half ? l[2 * p] : firstOf(l[2 * p]);
+			const int32_t word = p < Half ? l[2 * p] : pixelOf(l[2 * p]);
 			const __m256i weight = _mm256_set1_epi32(word);
 			for (int j = 0; j < V; j++)
 			{

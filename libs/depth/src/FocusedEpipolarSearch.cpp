@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
@@ -124,7 +125,7 @@ class CoreWindowNcc
 			const int32_t* l = level.leftPairs.ptr<int32_t>(v + dy) + u;
 			for (int dx = -half; dx <= half; dx++)
 			{
-				const int32_t a = l[dx] & 0xFFFF;
+				const int32_t a = pixelOf(l[dx]);
 				m_sumLeft += a, m_sumLeftSquares += a * a;
 			}
 		}
@@ -140,7 +141,7 @@ class CoreWindowNcc
 			const int32_t* r = m_level.rightPairs.ptr<int32_t>(m_v + dy) + x;
 			for (int dx = -m_half; dx <= m_half; dx++)
 			{
-				const int32_t a = l[dx] & 0xFFFF, b = r[dx] & 0xFFFF;
+				const int32_t a = pixelOf(l[dx]), b = pixelOf(r[dx]);
 				sr += b, srr += b * b, slr += a * b;
 			}
 		}

@@ -26,6 +26,9 @@ namespace lvf::depth
  * high ones (0 past the last column). */
 cv::Mat1i neighbourPairs(const cv::Mat1f& image);
 
+/** The grey level of a neighbour-pair word's own pixel. */
+inline int32_t pixelOf(int32_t pair) { return pair & 0xFFFF; }
+
 /** acc[i] = sum over the (2 half + 1)^2 window of left(u + dx, v + dy) x
  * right(x0 + i + dx, v + dy), i < n, from the two images' neighbour pairs;
  * every window inside both images. */
