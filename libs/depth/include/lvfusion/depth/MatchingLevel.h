@@ -2,10 +2,10 @@
 // One resolution of the rectified pair, ready for window matching along rows:
 // float images, the window mean and deviation of every pixel of both, or of
 // the rows it will match from (WindowStatistics.h; once per frame, the left
-// image's when first asked for), both as neighbour pairs for the cross terms
-// integer multiply-adds (CrossTerms.h), and an EpipolarScores each way (left windows
-// against the right row for the search, right windows against the left row
-// for the left-right check). The focused search keeps one at full
+// image's when first asked for), both images as neighbour pairs for the
+// cross terms' integer multiply-adds (CrossTerms.h), and an EpipolarScores
+// each way (left windows against the right row for the search, right
+// windows against the left row for the left-right check). The focused search keeps one at full
 // resolution and, for coarse-to-fine matching, one at half resolution.
 
 #include <lvfusion/depth/EpipolarScores.h>
