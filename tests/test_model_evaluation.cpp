@@ -251,6 +251,11 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 		}
 	}
 	EXPECT_GT(compared, 4000u);
+	// 33 rows of W^2 would overflow the 32-bit column sums: refused.
+	cv::Mat1f warped;
+	cv::Mat1b unverifiable;
+	warpByModel(scene.right, scene.eval.modelDisparity, scene.stereo.geometry(), warped, unverifiable);
+	EXPECT_THROW(GridWindowSums(scene.left, warped, unverifiable, 16), std::invalid_argument);
 }
 
 TEST(ModelEvaluation, FlagsTheFloatingBoxAndNothingElse)

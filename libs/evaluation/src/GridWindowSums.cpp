@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <stdexcept>
+#include <string>
 
 namespace lvf::evaluation
 {
@@ -45,7 +47,9 @@ GridWindowSums::GridWindowSums(
 	: m_left(left), m_warped(warped), m_unverifiable(unverifiable), m_half(half)
 {
 	assert(left.size() == warped.size() && left.size() == unverifiable.size());
-	assert(2 * half + 1 <= 31);
+	// The column sums of W^2 are 32-bit: 31 rows of (32 x 255)^2 fit, 33 do not.
+	if (half < 0 || 2 * half + 1 > kMaxWindow)
+		throw std::invalid_argument("GridWindowSums: window side " + std::to_string(2 * half + 1) + " outside 1.." + std::to_string(kMaxWindow));
 	for (int q = 0; q < kQuantities; q++)
 	{
 		m_columns[q].assign(static_cast<size_t>(left.cols), 0);

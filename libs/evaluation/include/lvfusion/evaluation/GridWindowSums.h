@@ -24,7 +24,10 @@ namespace lvf::evaluation
 class GridWindowSums
 {
    public:
-	/** Sums of (2 half + 1)^2 windows; W as warpByModel produces it. */
+	/** The largest window side (ModelEvaluator's window_size allows no more). */
+	static constexpr int kMaxWindow = 31;
+	/** Sums of (2 half + 1)^2 windows, 2 half + 1 <= kMaxWindow (else
+	 * std::invalid_argument); W as warpByModel produces it. */
 	GridWindowSums(const cv::Mat1b& left, const cv::Mat1f& warped, const cv::Mat1b& unverifiable, int half);
 
 	/** Prepares the windows centred on row v (rows v - half .. v + half must
