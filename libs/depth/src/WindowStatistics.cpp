@@ -1,3 +1,4 @@
+#include <lvfusion/common/SlidingWindowRows.h>
 #include <lvfusion/depth/WindowStatistics.h>
 
 #include <opencv2/imgproc.hpp>
@@ -42,7 +43,8 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 	const double scale = 1.0 / (side * side);
 	const size_t n = static_cast<size_t>(width);
 	std::vector<float> columnSum(n, 0.f), columnSquares(n, 0.f), windowSum(n), windowSquares(n);
-	auto addRow = [&](int y, float sign) {
+	auto addRow = [&](int y, int direction) {
+		const float sign = static_cast<float>(direction);
 		const float* row = image.ptr<float>(y);
 		for (int u = 0; u < width; u++)
 		{
@@ -50,21 +52,19 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 			columnSquares[size_t(u)] += sign * (row[u] * row[u]);
 		}
 	};
+	auto clear = [&] {
+		std::fill(columnSum.begin(), columnSum.end(), 0.f);
+		std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
+	};
 	// The grid's first row where a window fits.
 	const int start = rows.first >= half ? rows.first : rows.first + (half - rows.first + rows.step - 1) / rows.step * rows.step;
 	int previous = -1;
 	for (int v = start; v < image.rows - half; v += rows.step)
 	{
 		// The column sums over rows v - half .. v + half, slid down from the
-		// previous grid row's where the windows overlap.
-		if (previous >= 0 && v - previous < side)
-			for (int k = 1; k <= v - previous; k++) addRow(previous - half + k - 1, -1.f), addRow(previous + half + k, 1.f);
-		else
-		{
-			std::fill(columnSum.begin(), columnSum.end(), 0.f);
-			std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
-			for (int y = v - half; y <= v + half; y++) addRow(y, 1.f);
-		}
+		// previous grid row's where the windows overlap (exact integers:
+		// the order of the additions does not matter).
+		lvf::common::slideWindowRows(previous, v, half, clear, addRow);
 		previous = v;
 		// Window sums where a window fits, a column of the window at a time
 		// (loops the compiler vectorises).

@@ -1,3 +1,4 @@
+#include <lvfusion/common/SlidingWindowRows.h>
 #include <lvfusion/evaluation/GridWindowSums.h>
 
 #include <algorithm>
@@ -70,17 +71,9 @@ void GridWindowSums::addRow(int v, int sign)
 void GridWindowSums::moveTo(int v)
 {
 	assert(v - m_half >= 0 && v + m_half < m_left.rows);
-	if (m_row >= 0 && v > m_row && v - m_row <= 2 * m_half)
-	{
-		// Slide: the rows above the new window leave, those below it enter.
-		for (int r = m_row - m_half; r < v - m_half; r++) addRow(r, -1);
-		for (int r = m_row + m_half + 1; r <= v + m_half; r++) addRow(r, +1);
-	}
-	else if (v != m_row)
-	{
-		for (auto& c : m_columns) std::fill(c.begin(), c.end(), 0);
-		for (int r = v - m_half; r <= v + m_half; r++) addRow(r, +1);
-	}
+	lvf::common::slideWindowRows(
+		m_row, v, m_half, [&] { for (auto& c : m_columns) std::fill(c.begin(), c.end(), 0); },
+		[&](int y, int sign) { addRow(y, sign); });
 	m_row = v;
 	// All six running sums in one pass: six independent chains of additions
 	// (one quantity at a time, each addition waited for the one before).
