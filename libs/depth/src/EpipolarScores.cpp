@@ -66,8 +66,8 @@ typedef int32_t Ints8 __attribute__((vector_size(32)));
  * the cross sums and both windows' statistics; -1 where the right window is
  * flat. Eight at a time in explicit vectors (the compiler would not
  * if-convert the flat-window test), the same operations as the scalar tail,
- * cloned like the cross terms (AVX2: one register; search 9.5-9.8 -> 9.0-9.4
- * ms per box-room frame). Each lane rounds as the scalar code does: no
+ * cloned for AVX2 (one register; search 9.5-9.8 -> 9.0-9.4 ms per box-room
+ * frame). Each lane rounds as the scalar code does: no
  * product may be fused into a sum, so contraction is off (AVX2 alone has no
  * FMA anyway), and the same scores come out on every CPU. */
 LVF_VECTOR_CLONES __attribute__((optimize("fp-contract=off")))

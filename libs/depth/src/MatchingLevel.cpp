@@ -2,8 +2,6 @@
 #include <lvfusion/depth/MatchingLevel.h>
 #include <opencv2/imgproc.hpp>
 
-#include <lvfusion/depth/WindowStatistics.h>
-
 namespace lvf::depth
 {
 namespace
@@ -26,7 +24,6 @@ cv::Mat1f pyramidDown(const cv::Mat1f& image)
 	smoothed.convertTo(grey, CV_8U);
 	return asFloat(grey);
 }
-
 }  // namespace
 
 MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h, RowGrid rows)

@@ -36,7 +36,6 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "or below this, whatever the noise [grey levels]");
 }
 
-
 ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const

@@ -5,8 +5,9 @@
 // image's when first asked for), both images as neighbour pairs for the
 // cross terms' integer multiply-adds (CrossTerms.h), and an EpipolarScores
 // each way (left windows against the right row for the search, right
-// windows against the left row for the left-right check). The focused search keeps one at full
-// resolution and, for coarse-to-fine matching, one at half resolution.
+// windows against the left row for the left-right check). The focused
+// search keeps one at full resolution and, for coarse-to-fine matching, one
+// at half resolution.
 
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/WindowStatistics.h>
