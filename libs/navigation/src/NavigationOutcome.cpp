@@ -1,6 +1,8 @@
 #include <lvfusion/navigation/NavigationOutcome.h>
 #include <mrpt/core/format.h>
 
+#include <cmath>
+
 namespace lvf::navigation
 {
 const char* outcomeName(Outcome o)
@@ -35,10 +37,24 @@ int outcomeExitStatus(Outcome o)
 std::string NavigationMetrics::summary() const
 {
 	return mrpt::format(
-		"outcome=%s reached=%d collisions=%d time=%.1fs path=%.2fm final_distance=%.2fm "
+		"outcome=%s reached=%d collisions=%d time=%.1fs path=%.3fm final_distance=%.2fm "
 		"min_clearance=%.3fm cycle=%.1fms",
 		outcomeName(outcome), reached() ? 1 : 0, collisions, time, pathLength, finalDistance,
 		minClearance, meanCycleMs);
+}
+
+double stepLengthInsideCircle(
+	const mrpt::math::TPoint2D& from, const mrpt::math::TPoint2D& to,
+	const mrpt::math::TPoint2D& centre, double radius)
+{
+	const mrpt::math::TPoint2D u = to - from, w = from - centre;
+	const double uu = u.sqrNorm(), wu = w.x * u.x + w.y * u.y, ww = w.sqrNorm() - radius * radius;
+	if (ww <= 0) return std::sqrt(uu);
+	// |w + t u| = radius: the smaller root is where the step enters.
+	const double disc = wu * wu - uu * ww;
+	if (uu == 0 || disc < 0) return 0;
+	const double enter = (-wu - std::sqrt(disc)) / uu;
+	return enter < 0 || enter > 1 ? 0 : (1 - enter) * std::sqrt(uu);
 }
 
 }  // namespace lvf::navigation

@@ -264,6 +264,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 			break;
 		}
 		m.pathLength += std::hypot(next.x - pose.x, next.y - pose.y);
+		const mrpt::math::TPoint2D stepStart(pose);
 		pose = next;
 		m.trajectory.push_back(pose);
 		m.finalDistance = std::hypot(pose.x - scenario.target.x, pose.y - scenario.target.y);
@@ -283,6 +284,8 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 		}
 		if (m.finalDistance <= loop.targetTolerance)
 		{
+			m.pathLength -= stepLengthInsideCircle(
+				stepStart, mrpt::math::TPoint2D(pose), scenario.target, loop.targetTolerance);
 			m.outcome = Outcome::Reached;
 			m.detail = mrpt::format("reached the target after %.1f s", m.time);
 			break;
