@@ -126,6 +126,21 @@ TEST(VfhSteering, WideValleySteersAtTargetSideBorderPlusHalfSmax)
 	EXPECT_NEAR(costs[1], 117.5, 1e-9);
 }
 
+TEST(VfhSteering, TargetNearAWideValleysBorderNeedsTheMargin)
+{
+	// The cell ahead at 1 m again: the left valley's border sector is
+	// centred at 22.5 deg, and a target at 35 deg lies 2.5 sectors inside
+	// it. VFH+'s margin (s_max/2 = 8 sectors) leaves the border candidate
+	// 62.5 deg; a 1-sector margin adds the target itself, which costs least
+	// (5*0 + 2*7 + 2*7 = 28 against 5*5.5 + 2*12.5 + 2*12.5 = 77.5).
+	EXPECT_NEAR(steer({at(0, 1.0)}, 35.0), 62.5, 1e-9);
+	VfhParameters p;
+	p.targetBorderSectors = 1;
+	EXPECT_NEAR(steer({at(0, 1.0)}, 35.0, p), 35.0, 1e-9);
+	p.targetBorderSectors = 3;	// 2.5 sectors is not more than 3
+	EXPECT_NEAR(steer({at(0, 1.0)}, 35.0, p), 62.5, 1e-9);
+}
+
 TEST(VfhSteering, PreviousDirectionKeepsTheChoice)
 {
 	// The cell ahead at 1 m again (candidates +-62.5 deg, sector coordinates

@@ -25,7 +25,7 @@ std::vector<Valley> findValleys(const std::vector<uint8_t>& masked)
 
 std::vector<double> candidateDirections(
 	const std::vector<Valley>& valleys, const PolarSectors& sectors, double target,
-	int wideValleySectors)
+	int wideValleySectors, int targetBorderSectors)
 {
 	const double n = double(sectors.count());
 	std::vector<double> out;
@@ -46,9 +46,9 @@ std::vector<double> candidateDirections(
 		const double half = 0.5 * wideValleySectors;
 		out.push_back(wrapped(right + half));
 		out.push_back(wrapped(left - half));
-		// The target, measured ccw from the right border, between the two.
-		const double t = std::fmod(target - right + 2 * n, n);
-		if (t > half && t < double(v.width) - 1 - half) out.push_back(wrapped(target));
+		// The target, measured ccw from the right border, far enough inside.
+		const double t = std::fmod(target - right + 2 * n, n), margin = targetBorderSectors;
+		if (t > margin && t < double(v.width) - 1 - margin) out.push_back(wrapped(target));
 	}
 	return out;
 }
@@ -66,7 +66,7 @@ SteeringChoice chooseSteering(
 	double heading, double previous, const VfhParameters& p)
 {
 	SteeringChoice choice;
-	for (double c : candidateDirections(findValleys(masked), sectors, target, p.wideValleySectors))
+	for (double c : candidateDirections(findValleys(masked), sectors, target, p.wideValleySectors, p.targetBorderSectors))
 	{
 		const Candidate cand{c, steeringCost(c, sectors, target, heading, previous, p)};
 		choice.candidates.push_back(cand);

@@ -16,7 +16,7 @@ bool VfhParameters::operator==(const VfhParameters& o) const
 		return std::tie(
 			p.sectorAngleDeg, p.windowRadius, p.magnitudeA, p.robotRadius, p.safetyDistance,
 			p.smoothingL, p.tauLow, p.tauHigh, p.maskCertainty, p.minTurnRadius,
-			p.wideValleySectors, p.mu1, p.mu2, p.mu3, p.speedDensityLimit);
+			p.wideValleySectors, p.targetBorderSectors, p.mu1, p.mu2, p.mu3, p.speedDensityLimit);
 	};
 	return fields(*this) == fields(o);
 }
@@ -44,6 +44,7 @@ void VfhParameters::load(lvf::common::IniSection& ini, bool vehicleKeys)
 	maskCertainty = ini.real("mask_certainty", maskCertainty, 0, 1);
 	if (vehicleKeys) minTurnRadius = ini.real("min_turn_radius", minTurnRadius, 0, 1e6);
 	wideValleySectors = ini.integer("wide_valley_sectors", wideValleySectors, 1, int(sectorCount()));
+	targetBorderSectors = ini.integer("target_border_sectors", targetBorderSectors, 0, int(sectorCount()) / 2);
 	mu1 = ini.real("mu1", mu1, 0, 1e6);
 	mu2 = ini.real("mu2", mu2, 0, 1e6);
 	mu3 = ini.real("mu3", mu3, 0, 1e6);
@@ -67,6 +68,7 @@ void VfhParameters::save(
 	if (vehicleKeys)
 		writeOption(c, s, "min_turn_radius", minTurnRadius, "smallest turning radius, 0 = turns on the spot (no mask) [" + unit + "]");
 	writeOption(c, s, "wide_valley_sectors", wideValleySectors, "s_max: wider openings are wide valleys, steered at border + s_max/2 (VFH+: 16) [sectors]");
+	writeOption(c, s, "target_border_sectors", targetBorderSectors, "the target direction is a wide valley's candidate only this far inside its borders (VFH+: s_max/2 = 8) [sectors]");
 	writeOption(c, s, "mu1", mu1, "cost weight of the target direction (VFH+: 5)");
 	writeOption(c, s, "mu2", mu2, "cost weight of the current heading (VFH+: 2)");
 	writeOption(c, s, "mu3", mu3, "cost weight of the previous direction (VFH+: 2)");

@@ -5,7 +5,8 @@
 //  - narrow valley (at most s_max sectors): its centre;
 //  - wide valley: its right border + s_max/2 and its left border - s_max/2
 //    (keeping s_max/2 sectors of clearance from the obstacle), and the
-//    target direction itself when it lies between those two;
+//    target direction itself when it lies more than a margin inside the
+//    borders (VFH+: the same s_max/2, i.e. between those two);
 //  - cost g(c) = mu1 D(c, target) + mu2 D(c, heading) + mu3 D(c, previous),
 //    D the difference in sectors the shorter way round.
 // All positions are sector coordinates (PolarSectors): fractional, exact.
@@ -37,11 +38,11 @@ struct Candidate
 std::vector<Valley> findValleys(const std::vector<uint8_t>& masked);
 
 /** Candidate directions of the valleys for a target at sector coordinate
- * `target` (VFH+ rules above, plus: no blocked sector at all = the target
- * direction alone). */
+ * `target` (VFH+ rules above, the target's margin `targetBorderSectors`,
+ * plus: no blocked sector at all = the target direction alone). */
 std::vector<double> candidateDirections(
 	const std::vector<Valley>& valleys, const PolarSectors& sectors, double target,
-	int wideValleySectors);
+	int wideValleySectors, int targetBorderSectors);
 
 /** g(c) for the candidate at `c`. */
 double steeringCost(

@@ -60,6 +60,13 @@ struct VfhParameters : public mrpt::config::CLoadableOptions
 	/** s_max [sectors]: openings wider than this are "wide" valleys (VFH+
 	 * §2.4: 16 sectors of 5 deg). */
 	int wideValleySectors = 16;
+	/** In a wide valley the target direction itself is a candidate only if
+	 * it lies more than this inside the valley's borders [sectors]. VFH+
+	 * §2.4: s_max/2 (8), the same clearance as its border candidates, so
+	 * that near an obstacle the robot steers 40 deg off it rather than at
+	 * the target. A global plan that already keeps clearance (lvf-navigate's
+	 * guidance, navigate.ini) can take its subgoal from nearer the border. */
+	int targetBorderSectors = 8;
 	/** Cost weights (VFH+ §2.4): target, current heading, previous choice.
 	 * VFH+: mu1 = 5, mu2 = 2, mu3 = 2 (goal-oriented: mu1 > mu2 + mu3). */
 	double mu1 = 5.0, mu2 = 2.0, mu3 = 2.0;
