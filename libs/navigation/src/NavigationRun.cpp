@@ -57,8 +57,8 @@ mrpt::math::CPolygon robotShape(double radius)
  * "See" is some height of the band at the bearing's range: with the camera
  * tilted down, a bearing at the image's side can clear a floating box
  * above the part of the column in view (room 50 with overhangs). Requiring
- * the whole column was measured and not kept: one collision in 200 rooms
- * and the box room's (README, lvf-navigate, issue-4 list). */
+ * the whole column was measured and not kept: a collision in one of 200
+ * rooms and in the box room (README, lvf-navigate, issue-4 list). */
 mrpt::obs::CObservation2DRangeScan::Ptr inCameraView(
 	const mrpt::obs::CObservation2DRangeScan& fusedScan,
 	const mrpt::obs::CObservationStereoImages& stereo,
