@@ -240,12 +240,13 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 							bad += unverifiable(v + dv, u + du) != 0;
 						}
 					const GridWindowSums::Sums got = sums.at(u);
-					ASSERT_EQ(double(got.l), l) << "half " << half << " at (" << u << ", " << v << ")";
-					ASSERT_EQ(double(got.ll), ll) << "half " << half << " at (" << u << ", " << v << ")";
-					ASSERT_EQ(double(got.w32), 32 * w) << "half " << half << " at (" << u << ", " << v << ")";
-					ASSERT_EQ(double(got.ww1024), 1024 * ww) << "half " << half << " at (" << u << ", " << v << ")";
-					ASSERT_EQ(double(got.lw32), 32 * lw) << "half " << half << " at (" << u << ", " << v << ")";
-					ASSERT_EQ(double(got.unverifiable), bad) << "half " << half << " at (" << u << ", " << v << ")";
+					SCOPED_TRACE(testing::Message() << "half " << half << " at (" << u << ", " << v << ")");
+					ASSERT_EQ(double(got.l), l);
+					ASSERT_EQ(double(got.ll), ll);
+					ASSERT_EQ(double(got.w32), 32 * w);
+					ASSERT_EQ(double(got.ww1024), 1024 * ww);
+					ASSERT_EQ(double(got.lw32), 32 * lw);
+					ASSERT_EQ(double(got.unverifiable), bad);
 				}
 			}
 		}
