@@ -178,7 +178,8 @@ nav::NavigationSetup laserSetup(const std::string& method, bool guided, const st
 // guided: the robot goes round the U on the plan and reaches the target
 // without touching anything, with MRPT's ND, our VFH+ and MRPT's VFF.
 // (Measured before their fixes: guided VFH ended 0.41 m short after 60 s,
-// circling the target, and guided VFF never moved; README.)
+// circling the target, and guided VFF never moved;
+// share/doc/lvfusion/measurements.md.)
 class GuidedTrap : public ::testing::TestWithParam<const char*>
 {
 };

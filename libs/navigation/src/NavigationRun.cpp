@@ -58,7 +58,8 @@ mrpt::math::CPolygon robotShape(double radius)
  * tilted down, a bearing at the image's side can clear a floating box
  * above the part of the column in view (room 50 with overhangs). Requiring
  * the whole column was measured and not kept: a collision in one of 200
- * rooms and in the box room (README, lvf-navigate, issue-4 list). */
+ * rooms and in the box room (share/doc/lvfusion/measurements.md,
+ * lvf-navigate). */
 mrpt::obs::CObservation2DRangeScan::Ptr inCameraView(
 	const mrpt::obs::CObservation2DRangeScan& fusedScan,
 	const mrpt::obs::CObservationStereoImages& stereo,

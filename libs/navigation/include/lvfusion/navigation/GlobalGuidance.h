@@ -40,7 +40,8 @@ struct GuidanceOptions
 	 * table tops 0.6-0.8 m deep). Where that closes every way, the plan
 	 * keeps the clearance instead (the clearance's own fall-backs come
 	 * after): measured, a robot squeezed through gaps between assumed parts
-	 * with the bare radius dithered until its timeout (README) [m]; 0: off. */
+	 * with the bare radius dithered until its timeout
+	 * (share/doc/lvfusion/measurements.md) [m]; 0: off. */
 	double overhangDepth = 0.6;
 	double lookahead = 1.5;	 //!< the subgoal is at most this far along the path [m]
 	/** A blocked start (the robot brushing an obstacle cell) or goal is

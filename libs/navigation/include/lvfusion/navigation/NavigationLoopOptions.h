@@ -39,7 +39,7 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	 * sensing as it goes: its laser covers 180 degrees and its cameras 70,
 	 * so at the start the grid knows nothing behind or beside it, and the
 	 * navigator would reverse (MRPT's backward PTG) or swing into space
-	 * never seen (measured: README, lvf-navigate). */
+	 * never seen (measured: share/doc/lvfusion/measurements.md). */
 	bool lookAroundAtStart = true;
 
 	void loadFromConfigFile(

@@ -65,8 +65,8 @@ struct VfhParameters : public mrpt::config::CLoadableOptions
 	 * §2.4: s_max/2 (8), the same clearance as its border candidates, so
 	 * that near an obstacle the robot steers 40 deg off it rather than at
 	 * the target. Smaller margins steer straighter at the target: shorter
-	 * paths, less room for what vision missed (measured: README,
-	 * lvf-navigate). */
+	 * paths, less room for what vision missed (measured:
+	 * share/doc/lvfusion/measurements.md, lvf-navigate). */
 	int targetBorderSectors = 8;
 	/** Cost weights (VFH+ §2.4): target, current heading, previous choice.
 	 * VFH+: mu1 = 5, mu2 = 2, mu3 = 2 (goal-oriented: mu1 > mu2 + mu3). */
