@@ -41,6 +41,60 @@ CLaserStereoFusion::TOptions loadOptions(const std::string& path)
 /** "dir/name.rawlog" -> "name". */
 std::string baseName(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
+/** --truth if given, else NAME_truth_scans.csv beside the input if it
+ * exists (what lvf-simulate and lvf-import-middlebury write), else none. */
+std::string truthScansFor(const std::string& input, const std::string& given)
+{
+	if (!given.empty()) return given;
+	const std::string beside =
+		(std::filesystem::path(input).parent_path() / (baseName(input) + "_truth_scans.csv")).string();
+	return mrpt::system::fileExists(beside) ? beside : "";
+}
+
+/** DESIGN.md's figures for one frame, if a truth scan has its time stamp
+ * and its bearings. */
+std::optional<lvf::apps::FrameTruth> scoreAgainstTruth(
+	const std::vector<lvf::metrics::TruthScan>& truth, const lvf::apps::FusionFrame& f,
+	const CLaserStereoFusion::Result& r, const CLaserStereoFusion::TOptions& options)
+{
+	const auto* t = lvf::metrics::findTruthScan(truth, mrpt::Clock::toDouble(f.scan->timestamp));
+	if (!t || t->ranges.size() != f.scan->getScanSize()) return std::nullopt;
+	lvf::apps::FrameTruth ft;
+	ft.ranges = t->ranges;
+	ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
+	ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
+	ft.score = lvf::metrics::scoreFusedScan(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
+	return ft;
+}
+
+/** Per input entry, what to write after it: the results of the frames
+ * whose pair ends there. */
+using ResultsAfterEntry = std::map<size_t, std::vector<mrpt::obs::CObservation::Ptr>>;
+
+/** The input, entry by entry, in its own layout, with each frame's results
+ * after its pair (inside the sensory frame, in that layout). */
+void writeWithResults(const std::string& path, const lvf::apps::RawlogFrames& in, const ResultsAfterEntry& additions)
+{
+	lvf::common::RawlogWriter out(
+		path, in.sensoryFrames ? lvf::common::RawlogFormat::ActionsSensoryFrames
+							   : lvf::common::RawlogFormat::Observations);
+	for (size_t i = 0; i < in.entries.size(); i++)
+	{
+		const auto extra = additions.find(i);
+		const auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(in.entries[i]);
+		if (sf && extra != additions.end())
+		{
+			mrpt::obs::CSensoryFrame withResults(*sf);
+			for (const auto& o : extra->second) withResults.insert(o);
+			out.appendEntry(withResults);
+			continue;
+		}
+		out.appendEntry(*in.entries[i]);
+		if (extra != additions.end())
+			for (const auto& o : extra->second) out.appendEntry(*o);
+	}
+}
+
 int run(int argc, char** argv)
 {
 	TCLAP::CmdLine cmd(
@@ -76,13 +130,7 @@ int run(int argc, char** argv)
 
 	const std::string input = argInput.getValue();
 	const std::string name = baseName(input);
-	std::string truthPath = argTruth.getValue();
-	if (truthPath.empty())
-	{
-		const std::string beside =
-			(std::filesystem::path(input).parent_path() / (name + "_truth_scans.csv")).string();
-		if (mrpt::system::fileExists(beside)) truthPath = beside;
-	}
+	const std::string truthPath = truthScansFor(input, argTruth.getValue());
 	const auto truth = truthPath.empty() ? std::vector<lvf::metrics::TruthScan>{}
 										 : lvf::metrics::readTruthScans(truthPath);
 	mrpt::system::CTicTac timer;
@@ -110,7 +158,7 @@ int run(int argc, char** argv)
 	lvf::apps::FusionOutputs outputs(files, name, argGridRes.getValue());
 	CLaserStereoFusion fusion(options);
 	const bool quiet = argQuiet.getValue();
-	std::map<size_t, std::vector<mrpt::obs::CObservation::Ptr>> additions;	// after entry
+	ResultsAfterEntry additions;
 	lvf::metrics::FusionScore total;
 	size_t badFrames = 0, fallbacks = 0, scored = 0;
 	double timeSum = 0;
@@ -134,18 +182,8 @@ int run(int argc, char** argv)
 		fallbacks += r.fellBackToLaser;
 		timeSum += r.times.total();
 
-		std::optional<lvf::apps::FrameTruth> frameTruth;
-		if (const auto* t = lvf::metrics::findTruthScan(truth, mrpt::Clock::toDouble(f.scan->timestamp));
-			t && t->ranges.size() == f.scan->getScanSize())
-		{
-			auto& ft = frameTruth.emplace();
-			ft.ranges = t->ranges;
-			ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
-			ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
-			ft.score = lvf::metrics::scoreFusedScan(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
-			total.add(ft.score);
-			scored++;
-		}
+		const auto frameTruth = scoreAgainstTruth(truth, f, r, options);
+		if (frameTruth) total.add(frameTruth->score), scored++;
 		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
 		auto& after = additions[std::max(f.scanEntry, f.stereoEntry)];
 		after.push_back(r.fused);
@@ -153,27 +191,7 @@ int run(int argc, char** argv)
 		if (!quiet) progress.update(k + 1);
 	}
 
-	// The input, entry by entry, with each frame's results after its pair.
-	{
-		lvf::common::RawlogWriter out(
-			outputPath, in.sensoryFrames ? lvf::common::RawlogFormat::ActionsSensoryFrames
-										 : lvf::common::RawlogFormat::Observations);
-		for (size_t i = 0; i < in.entries.size(); i++)
-		{
-			const auto extra = additions.find(i);
-			const auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(in.entries[i]);
-			if (sf && extra != additions.end())
-			{
-				mrpt::obs::CSensoryFrame withResults(*sf);
-				for (const auto& o : extra->second) withResults.insert(o);
-				out.appendEntry(withResults);
-				continue;
-			}
-			out.appendEntry(*in.entries[i]);
-			if (extra != additions.end())
-				for (const auto& o : extra->second) out.appendEntry(*o);
-		}
-	}
+	writeWithResults(outputPath, in, additions);
 	outputs.close();
 	files.commit();
 	if (outputFile) outputFile->commit();
