@@ -116,7 +116,7 @@ void ClosedLoop::run()
 		cycleSeconds += timer.Tac();
 		m_metrics.cycles++;
 		m_metrics.time += m_loop.controlPeriod;
-		if (!judgeMove() || !navigatorGoesOn() || timedOut()) break;
+		if (!judgeMove() || !navigatorGoesOn() || !timeLeft()) break;
 	}
 	m_metrics.meanCycleMs = 1e3 * cycleSeconds / double(std::max<size_t>(1, m_metrics.cycles));
 }
@@ -260,13 +260,13 @@ bool ClosedLoop::navigatorGoesOn()
 	return false;
 }
 
-bool ClosedLoop::timedOut()
+bool ClosedLoop::timeLeft()
 {
 	auto& m = m_metrics;
-	if (m.time < m_loop.timeout - 1e-9) return false;
+	if (m.time < m_loop.timeout - 1e-9) return true;
 	m.outcome = Outcome::Timeout;
 	m.detail = mrpt::format("still %.2f m from the target after %.1f s", m.finalDistance, m.time);
-	return true;
+	return false;
 }
 
 void ClosedLoop::steerAt(const mrpt::math::TPoint2D& p, bool isTarget)

@@ -2,6 +2,8 @@
 // One closed-loop run of lvf-navigate, step by step (runNavigation's
 // engine; private to libs/navigation).
 
+#include <cmath>
+
 #include <lvfusion/navigation/GlobalGuidance.h>
 #include <lvfusion/navigation/NavigationRun.h>
 #include <lvfusion/navigation/SimulatedRobotInterface.h>
@@ -56,8 +58,9 @@ class ClosedLoop
 	 * the run); unguided, it ends the run. */
 	bool navigatorGoesOn();
 
-	/** True (the run ends, `timeout`) once the simulated time is up. */
-	bool timedOut();
+	/** Simulated time left before the timeout; false (the run ends,
+	 * `timeout`) once it is up. */
+	bool timeLeft();
 
 	/** The navigator's target: the scenario's, or with global guidance a
 	 * point of the planned path (an intermediary waypoint: no slowing down). */
