@@ -466,19 +466,20 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 {
 	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
 	// Issue #3's targets on these scenes are recall >= 0.8 and phantom rate
-	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle 0),
-	// recall is not quite (0.739, 0.585). Motorcycle's misses: returns at
-	// the image's edge (no right view), and the nearest part of the front
-	// wheel, which does not match; Recycle's: the bins' bases, 5-10 cm above
-	// the floor, within d_allow of the floor model or untextured. (0.217 for
-	// Motorcycle while the line extractor used the thresholds for 5 cm of
-	// range noise on this 1 cm slice: one segment through the whole
-	// motorcycle, test_line_segments' ThresholdsFollowTheScansStatedNoise.
-	// Recycle: 0.434 with texture gates fixed at 4 and 5 grey levels;
-	// relative to the image's noise they are ~1 on these clean images,
-	// ImageNoise.h.) These bounds guard the present level; tighten them as
-	// it improves.
-	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.55, 0.02}}};
+	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle
+	// 0.009), recall is not quite (0.739, 0.698). Motorcycle's misses:
+	// returns at the image's edge (no right view), and the nearest part of
+	// the front wheel, which does not match; Recycle's: the bins' untextured
+	// bases, a lid's rim, the image's edges. (Recycle: 0.585 while
+	// criterion a applied on the floor model too, keeping the search off
+	// the bins' bases 5-10 cm above the floor; 0.434 with texture gates
+	// fixed at 4 and 5 grey levels, where relative to the image's noise
+	// they are ~1 on these clean images, ImageNoise.h. Motorcycle: 0.217
+	// while the line extractor used the thresholds for 5 cm of range noise
+	// on this 1 cm slice: one segment through the whole motorcycle,
+	// test_line_segments' ThresholdsFollowTheScansStatedNoise.) These
+	// bounds guard the present level; tighten them as it improves.
+	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.65, 0.02}}};
 	for (const auto& name : kFloorScenes)
 	{
 		SCOPED_TRACE(name);

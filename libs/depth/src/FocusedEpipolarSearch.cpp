@@ -48,7 +48,7 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
-	writeOption(c, s, "criterion_a", criterionA, "search only |Z - Z_laser| >= d_allow (paper Fig. 6a)");
+	writeOption(c, s, "criterion_a", criterionA, "search only |Z - Z_laser| >= d_allow (paper Fig. 6a); where the model is the floor, the band's lower edge instead (with bound_by_height_band)");
 	writeOption(c, s, "d_allow", dAllow, "criterion a's margin around the model depth [m]");
 	writeOption(c, s, "criterion_b", criterionB, "search only Z <= Z_laser, in front of the model (Fig. 6b)");
 	writeOption(c, s, "criterion_c", criterionC, "search only z_min <= Z <= z_max (Fig. 6c)");
@@ -71,11 +71,14 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 namespace
 {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/** A model point this close to the floor's height is the model's floor [m]
+ * (the model's surfaces are exact planes: only rounding separates them). */
+constexpr double kOnTheFloor = 1e-3;
 }  // namespace
 
 DisparitySet FocusedEpipolarSearch::allowedDisparities(
 	int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
-	int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const
+	int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band, double floorHeight) const
 {
 	const double fB = g.fB();
 	// Disparities whose right window lies inside the image.
@@ -85,7 +88,17 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 	{
 		const double zModel = fB / modelDisparity;
 		if (m_options.criterionB) set.intersect({modelDisparity, kInfinity});
-		if (m_options.criterionA)
+		// Criterion a says how close to the model is too close by depth along
+		// the ray. On the floor that measure fails: a ray meets the floor at
+		// a grazing angle, so d_allow of depth is a few centimetres of height
+		// there (Z h / (H - h): 0.07 m of depth for 5 cm at 1.5 m from a
+		// camera 1.1 m up), and it kept the search off the lowest part of
+		// every obstacle standing on the floor (Middlebury's Recycle: the
+		// bins' bases). What is too close to the floor is a matter of
+		// height, and the band's lower edge (obstacle_min_height) decides
+		// that below.
+		const bool floorModel = std::abs(camera.z() + zModel * ray.z() - floorHeight) < kOnTheFloor;
+		if (m_options.criterionA && !(floorModel && m_options.boundByBand))
 			set.remove(
 				fB / (zModel + m_options.dAllow),
 				zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity);
@@ -291,7 +304,7 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchAtFullResolution(
 FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const lvf::evaluation::ModelEvaluation& evaluation, int windowSize,
-	const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const
+	const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band, double floorHeight) const
 {
 	Result out;
 	const int half = windowSize / 2;
@@ -325,7 +338,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			}
 			const double dModel = evaluation.modelDisparity(v, u);
 			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
-			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band);
+			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorHeight);
 			if (set.empty() || set.integerCount() == 0)
 			{
 				mark(SearchOutcome::EmptyRange, stats.skippedEmptyRange);

@@ -166,7 +166,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 
 	r.search = timed(r.times.search, [&] {
 		return lvf::depth::FocusedEpipolarSearch(m_options.depth)
-			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band);
+			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band,
+				m_options.floorHeight);
 	});
 	r.fused = timed(r.times.fuse, [&] {
 		const ScanFusion fusion(m_options.fusion);

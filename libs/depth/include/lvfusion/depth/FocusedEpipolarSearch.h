@@ -74,7 +74,10 @@ class FocusedEpipolarSearch
 	/** INI section [FocusedEpipolarSearch]. */
 	struct TOptions : public mrpt::config::CLoadableOptions
 	{
-		bool criterionA = true;	 //!< |Z - Zl| >= d_allow
+		/** |Z - Zl| >= d_allow; where the model is the floor and the band
+		 * bounds the search, the band's lower edge instead (d_allow of depth
+		 * along a ray grazing the floor is a few centimetres of height). */
+		bool criterionA = true;
 		/** [m]; below the 0.15 m by which a hidden bearing's obstacle stands
 		 * in front of the laser (DESIGN.md), or such obstacles could not be
 		 * found: 0.25 cost Middlebury's Recycle 0.19 -> 0.47 recall. */
@@ -138,20 +141,25 @@ class FocusedEpipolarSearch
 	explicit FocusedEpipolarSearch(const TOptions& options) : m_options(options) {}
 
 	/** @param windowSize the NCC window, the one the evaluation used (its
-	 *  left-image window statistics are reused). */
+	 *  left-image window statistics are reused).
+	 *  @param floorHeight the model's floor, z in the robot frame [m]. */
 	Result search(
 		const cv::Mat1b& left, const cv::Mat1b& right,
 		const lvf::evaluation::ModelEvaluation& evaluation, int windowSize,
-		const lvf::evaluation::RectifiedGeometry& geometry, const HeightBand& band) const;
+		const lvf::evaluation::RectifiedGeometry& geometry, const HeightBand& band,
+		double floorHeight) const;
 
 	const TOptions& options() const { return m_options; }
 
    private:
 	/** Criteria a, b, c and the band for the left pixel in column u whose
-	 * ray (robot frame) leaves the camera centre `camera`. */
+	 * ray (robot frame) leaves the camera centre `camera`. Where the model
+	 * is the floor (at floorHeight) and the band bounds the search,
+	 * criterion a gives way to the band's lower edge. */
 	DisparitySet allowedDisparities(
 		int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
-		int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band) const;
+		int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band,
+		double floorHeight) const;
 	/** One left pixel to match: where, what the model says, what may be searched. */
 	struct PixelQuery
 	{
