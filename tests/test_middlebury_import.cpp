@@ -466,20 +466,20 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 {
 	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
 	// Issue #3's targets on these scenes are recall >= 0.8 and phantom rate
-	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle
-	// 0.009), recall is not quite (0.739, 0.698). Motorcycle's misses:
-	// returns at the image's edge (no right view), and the nearest part of
-	// the front wheel, which does not match; Recycle's: the bins' untextured
-	// bases, a lid's rim, the image's edges. (Recycle: 0.585 while
-	// criterion a applied on the floor model too, keeping the search off
-	// the bins' bases 5-10 cm above the floor; 0.434 with texture gates
-	// fixed at 4 and 5 grey levels, where relative to the image's noise
-	// they are ~1 on these clean images, ImageNoise.h. Motorcycle: 0.217
+	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle 0),
+	// recall is not quite (0.739, 0.585). Motorcycle's misses: returns at
+	// the image's edge (no right view), and the nearest part of the front
+	// wheel, which does not match; Recycle's: the bins' bases, 5-10 cm
+	// above the floor, within d_allow of the floor model (see the next
+	// test) or untextured, a lid's rim, the image's edges. (Recycle: 0.434
+	// with texture gates fixed at 4 and 5 grey levels, where relative to
+	// the image's noise they are ~1 on these clean images, ImageNoise.h.
+	// Motorcycle: 0.217
 	// while the line extractor used the thresholds for 5 cm of range noise
 	// on this 1 cm slice: one segment through the whole motorcycle,
 	// test_line_segments' ThresholdsFollowTheScansStatedNoise.) These
 	// bounds guard the present level; tighten them as it improves.
-	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.65, 0.02}}};
+	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.55, 0.02}}};
 	for (const auto& name : kFloorScenes)
 	{
 		SCOPED_TRACE(name);
@@ -496,6 +496,31 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 		EXPECT_LE(phantomRate, floor.at(name).second) << fused.out;
 		EXPECT_GE(phantomRate, 0) << fused.out;
 	}
+}
+
+TEST_F(MiddleburyImport, FloorDisparityMarginFindsTheBinsBases)
+{
+	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
+	// Recycle's bins stand on the floor; their bases, 5-10 cm up, are in
+	// the band but within d_allow (0.12 m of depth, ~7 px of disparity in
+	// these images) of the floor model, so criterion a hides them. With
+	// floor_disparity_margin = 2 (px) it spares them. Measured: recall
+	// 0.585 -> 0.698, phantom rate 0 -> 0.009 (one bearing of 112).
+	const std::string name = "Recycle";
+	const auto imported = import("--scene " + (kScenes / name).string() + " --out in -q");
+	ASSERT_EQ(imported.status, 0) << imported.err;
+	std::ofstream(m_dir / "floor.ini") << "[FocusedEpipolarSearch]\nfloor_disparity_margin = 2\n";
+	const auto paper = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir a");
+	const auto narrowed = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir b --config floor.ini");
+	ASSERT_EQ(paper.status, 0) << paper.err;
+	ASSERT_EQ(narrowed.status, 0) << narrowed.err;
+	const auto [before, phantomsBefore] = recallAndPhantomRate(paper.out);
+	const auto [after, phantomsAfter] = recallAndPhantomRate(narrowed.out);
+	std::cout << "[ lvf-fuse ] Recycle: recall " << before << " -> " << after << ", phantom rate "
+			  << phantomsBefore << " -> " << phantomsAfter << "\n";
+	EXPECT_GE(after, before + 0.08) << narrowed.out;
+	EXPECT_GE(after, 0.65) << narrowed.out;
+	EXPECT_LE(phantomsAfter, 0.02) << narrowed.out;
 }
 
 TEST_F(MiddleburyImport, CalibrationCheckKeepsItsOwnNccWhenTheModelCheckIsStricter)

@@ -23,6 +23,7 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	lvf::common::IniSection ini(source, section);
 	criterionA = ini.flag("criterion_a", criterionA);
 	dAllow = ini.real("d_allow", dAllow, 0, 100);
+	floorDisparityMargin = ini.real("floor_disparity_margin", floorDisparityMargin, 0, 1000);
 	criterionB = ini.flag("criterion_b", criterionB);
 	criterionC = ini.flag("criterion_c", criterionC);
 	zMin = ini.real("z_min", zMin, 0.01, 1000);
@@ -48,8 +49,9 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
-	writeOption(c, s, "criterion_a", criterionA, "search only |Z - Z_laser| >= d_allow (paper Fig. 6a); where the model is the floor, the band's lower edge instead (with bound_by_height_band)");
+	writeOption(c, s, "criterion_a", criterionA, "search only |Z - Z_laser| >= d_allow (paper Fig. 6a)");
 	writeOption(c, s, "d_allow", dAllow, "criterion a's margin around the model depth [m]");
+	writeOption(c, s, "floor_disparity_margin", floorDisparityMargin, "where the model is the floor, criterion a's margin in front of it at most this much disparity, the band's lower edge deciding the rest (with bound_by_height_band; finds obstacles a few cm tall on rigs that resolve them); 0: off, d_allow as on walls [px]");
 	writeOption(c, s, "criterion_b", criterionB, "search only Z <= Z_laser, in front of the model (Fig. 6b)");
 	writeOption(c, s, "criterion_c", criterionC, "search only z_min <= Z <= z_max (Fig. 6c)");
 	writeOption(c, s, "z_min", zMin, "nearest depth searched [m]");
@@ -74,11 +76,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /** A model point this close to the floor's height is the model's floor [m]
  * (the model's surfaces are exact planes: only rounding separates them). */
 constexpr double kOnTheFloor = 1e-3;
+/** Columns on each side of the model's own disparity that the model check
+ * reads: a match nearer than this to it has the model's column on its own
+ * peak's flank [px]. */
+constexpr int kModelFlank = 2;
 }  // namespace
 
 DisparitySet FocusedEpipolarSearch::allowedDisparities(
 	int u, double modelDisparity, const Eigen::Vector3d& ray, const Eigen::Vector3d& camera,
-	int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band, double floorHeight) const
+	int half, const lvf::evaluation::RectifiedGeometry& g, const HeightBand& band, bool floorModel) const
 {
 	const double fB = g.fB();
 	// Disparities whose right window lies inside the image.
@@ -89,19 +95,21 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 		const double zModel = fB / modelDisparity;
 		if (m_options.criterionB) set.intersect({modelDisparity, kInfinity});
 		// Criterion a says how close to the model is too close by depth along
-		// the ray. On the floor that measure fails: a ray meets the floor at
-		// a grazing angle, so d_allow of depth is a few centimetres of height
-		// there (Z h / (H - h): 0.07 m of depth for 5 cm at 1.5 m from a
-		// camera 1.1 m up), and it kept the search off the lowest part of
-		// every obstacle standing on the floor (Middlebury's Recycle: the
-		// bins' bases). What is too close to the floor is a matter of
-		// height, and the band's lower edge (obstacle_min_height) decides
-		// that below.
-		const bool floorModel = std::abs(camera.z() + zModel * ray.z() - floorHeight) < kOnTheFloor;
-		if (m_options.criterionA && !(floorModel && m_options.boundByBand))
-			set.remove(
-				fB / (zModel + m_options.dAllow),
-				zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity);
+		// the ray. On the floor that measure is off: a ray meets the floor at
+		// a grazing angle, so d_allow of depth is only a few centimetres of
+		// height there (Z h / (H - h): 0.07 m of depth for 5 cm at 1.5 m from
+		// a camera 1.1 m up), and it keeps the search off the lowest part of
+		// obstacles standing on the floor (Middlebury's Recycle: the bins'
+		// bases). floor_disparity_margin narrows it there to what matching
+		// cannot tell from the floor (within 2 px the floor's own column lies
+		// on the match's peak, where the model check cannot see it; lifted
+		// altogether, criterion a let points 5-9 cm up through on the
+		// simulator's bare, smooth floor), and the band's lower edge below
+		// decides what is an obstacle. Off by default (floorDisparityMargin).
+		double nearer = zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity;
+		if (floorModel && m_options.boundByBand && m_options.floorDisparityMargin > 0)
+			nearer = std::min(nearer, modelDisparity + m_options.floorDisparityMargin);
+		if (m_options.criterionA) set.remove(fB / (zModel + m_options.dAllow), nearer);
 	}
 	if (m_options.boundByBand)
 	{
@@ -246,7 +254,8 @@ bool FocusedEpipolarSearch::passesLocalTests(
 	// an obstacle less than a couple of pixels of disparity in front of the
 	// wall (far away) has the model's column on its flank, and that is the
 	// obstacle scoring, not the model.
-	if (q.modelDisparity > 0 && !beatsTheRestOfTheLine(scores, bestX, best, xModel - 2, xModel + 2))
+	if (q.modelDisparity > 0 &&
+		!beatsTheRestOfTheLine(scores, bestX, best, xModel - kModelFlank, xModel + kModelFlank))
 	{
 		m.outcome = SearchOutcome::Ambiguous;
 		return false;
@@ -338,7 +347,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			}
 			const double dModel = evaluation.modelDisparity(v, u);
 			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
-			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorHeight);
+			const bool floorModel = dModel > 0 && std::abs(C.z() + fB / dModel * ray.z() - floorHeight) < kOnTheFloor;
+			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
 			if (set.empty() || set.integerCount() == 0)
 			{
 				mark(SearchOutcome::EmptyRange, stats.skippedEmptyRange);

@@ -8,8 +8,8 @@
 //   c  Zmin <= Z <= Zmax         neither too near nor too far for the robot
 //   band                        the point's height lies in the robot's band
 // Their intersection is at most two intervals (a without b leaves both sides).
-// (Where the model's surface is the floor, the search lets the band's lower
-// edge stand for a: FocusedEpipolarSearch::allowedDisparities.)
+// (Where the model's surface is the floor, a can be narrowed to what matching
+// cannot resolve, the band deciding: `floor_disparity_margin`.)
 
 #include <array>
 #include <cstddef>
