@@ -474,11 +474,10 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 	// test) or untextured, a lid's rim, the image's edges. (Recycle: 0.434
 	// with texture gates fixed at 4 and 5 grey levels, where relative to
 	// the image's noise they are ~1 on these clean images, ImageNoise.h.
-	// Motorcycle: 0.217
-	// while the line extractor used the thresholds for 5 cm of range noise
-	// on this 1 cm slice: one segment through the whole motorcycle,
-	// test_line_segments' ThresholdsFollowTheScansStatedNoise.) These
-	// bounds guard the present level; tighten them as it improves.
+	// Motorcycle: 0.217 while the line extractor used the thresholds for
+	// 5 cm of range noise on this 1 cm slice: one segment through the whole
+	// motorcycle, test_line_segments' ThresholdsFollowTheScansStatedNoise.)
+	// These bounds guard the present level; tighten them as it improves.
 	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.55, 0.02}}};
 	for (const auto& name : kFloorScenes)
 	{

@@ -347,7 +347,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			}
 			const double dModel = evaluation.modelDisparity(v, u);
 			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
-			const bool floorModel = dModel > 0 && std::abs(C.z() + fB / dModel * ray.z() - floorHeight) < kOnTheFloor;
+			const bool floorModel = m_options.floorDisparityMargin > 0 && dModel > 0 &&
+				std::abs(C.z() + fB / dModel * ray.z() - floorHeight) < kOnTheFloor;
 			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
 			if (set.empty() || set.integerCount() == 0)
 			{
