@@ -40,8 +40,8 @@ inline std::string wallWorld(double wallX, const std::string& texture = "noise")
 
 /** A 6 x 6 m room (walls 0.1 m thick, inner faces at x = -1, 5, y = -3, 3)
  * around a robot at the origin looking along +x, plus `boxes`, YAML list
- * items ("  - {pose: ...}\n"). */
-inline std::string roomWorld(const std::string& boxes)
+ * items ("  - {pose: ...}\n"), and `more` world keys ("tables:\n  - ...\n"). */
+inline std::string roomWorld(const std::string& boxes, const std::string& more = "")
 {
 	return "name: room\n"
 		   "walls:\n"
@@ -49,7 +49,7 @@ inline std::string roomWorld(const std::string& boxes)
 		   "  - {from: [5.05, -3.05], to: [5.05, 3.05]}\n"
 		   "  - {from: [5.05, 3.05], to: [-1.05, 3.05]}\n"
 		   "  - {from: [-1.05, 3.05], to: [-1.05, -3.05]}\n"
-		   "boxes:" + (boxes.empty() ? std::string(" []\n") : "\n" + boxes) +
+		   "boxes:" + (boxes.empty() ? std::string(" []\n") : "\n" + boxes) + more +
 		"path: {poses: [[0, 0, 0]]}\n";
 }
 

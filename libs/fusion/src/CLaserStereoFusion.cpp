@@ -20,6 +20,7 @@ namespace
 const char* kLines = "ScanLineExtractor";
 const char* kEvaluation = "ModelEvaluator";
 const char* kDepth = "FocusedEpipolarSearch";
+const char* kGrowth = "HorizontalSurfaceGrowth";
 const char* kFusion = "ScanFusion";
 
 /** Runs f() and adds its duration to `ms`. */
@@ -36,7 +37,7 @@ auto timed(double& ms, F&& f)
 void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
-	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kFusion});
+	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kGrowth, kFusion});
 	lvf::common::IniSection ini(source, section);
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);
@@ -50,6 +51,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	lines.loadFromConfigFile(source, kLines);
 	evaluation.loadFromConfigFile(source, kEvaluation);
 	depth.loadFromConfigFile(source, kDepth);
+	growth.loadFromConfigFile(source, kGrowth);
 	fusion.loadFromConfigFile(source, kFusion);
 }
 
@@ -67,6 +69,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	lines.saveToConfigFile(c, kLines);
 	evaluation.saveToConfigFile(c, kEvaluation);
 	depth.saveToConfigFile(c, kDepth);
+	growth.saveToConfigFile(c, kGrowth);
 	fusion.saveToConfigFile(c, kFusion);
 }
 
@@ -165,9 +168,15 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 	}
 
 	r.search = timed(r.times.search, [&] {
-		return lvf::depth::FocusedEpipolarSearch(m_options.depth)
+		auto found = lvf::depth::FocusedEpipolarSearch(m_options.depth)
 			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band,
 				m_options.floorHeight);
+		const double textureGate = lvf::evaluation::noiseRelativeGate(
+			r.evaluation.noiseStd, m_options.depth.textureNoiseRatio, m_options.depth.minTextureStd);
+		r.grownPoints = lvf::depth::HorizontalSurfaceGrowth(m_options.growth)
+			.grow(r.left, r.right, r.geometry, r.evaluation, m_options.band, textureGate, m_options.depth.pixelStride,
+				found.points);
+		return found;
 	});
 	r.fused = timed(r.times.fuse, [&] {
 		const ScanFusion fusion(m_options.fusion);

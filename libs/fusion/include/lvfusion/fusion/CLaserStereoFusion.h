@@ -6,6 +6,7 @@
 //   2. segments -> planar model           lvf::model::PlanarSceneModel
 //   3. model evaluation (NCC)             lvf::evaluation::ModelEvaluator
 //   4. focused epipolar depth search      lvf::depth::FocusedEpipolarSearch
+//      horizontal surfaces followed on    lvf::depth::HorizontalSurfaceGrowth
 //   5. fused virtual scan                 lvf::fusion::ScanFusion
 //
 // Configuration: an MRPT INI file with one section per stage (defaults and
@@ -13,6 +14,7 @@
 
 #include <lvfusion/common/HeightBand.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include <lvfusion/depth/HorizontalSurfaceGrowth.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <lvfusion/fusion/ScanFusion.h>
 #include <lvfusion/lines/ScanLineExtractor.h>
@@ -59,6 +61,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		lvf::lines::ScanLineExtractor::TOptions lines;
 		lvf::evaluation::ModelEvaluator::TOptions evaluation;
 		lvf::depth::FocusedEpipolarSearch::TOptions depth;
+		lvf::depth::HorizontalSurfaceGrowth::TOptions growth;
 		ScanFusion::TOptions fusion;
 
 		/** Reads every section; unknown sections and keys are errors. */
@@ -82,7 +85,8 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		lvf::evaluation::RectifiedGeometry geometry;
 		cv::Mat1b left, right;	//!< rectified grey images
 		lvf::evaluation::ModelEvaluation evaluation;
-		lvf::depth::FocusedEpipolarSearch::Result search;
+		lvf::depth::FocusedEpipolarSearch::Result search;  //!< its points include the grown ones
+		size_t grownPoints = 0;	 //!< of them, added by HorizontalSurfaceGrowth
 		std::vector<float> visualRanges;  //!< per laser bearing, inf: none
 		mrpt::obs::CObservation2DRangeScan::Ptr fused;	//!< label FUSED
 		bool fellBackToLaser = false;  //!< vision not used this frame (see warnings)

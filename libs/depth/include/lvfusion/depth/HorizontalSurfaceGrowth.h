@@ -1,0 +1,99 @@
+#pragma once
+// Stage 4b: horizontal surfaces (table tops, box tops seen from above)
+// followed towards the camera, beyond where the focused search finds them.
+//
+// The search's square windows assume a surface facing the camera. On a
+// horizontal plane h below (or above) the camera the disparity changes by
+// about fB / (f |h|) per image row -- 0.5 px a row for a table top 0.25 m
+// under the camera -- so an 11-row window spans 5 px of disparity there and
+// matches only where the texture happens to allow it: the search finds a
+// top, but well behind its front edge (seeded room 5: 0.1-0.45 m behind),
+// and a bearing's range comes out too far.
+//
+// This stage takes the search's own evidence of a horizontal surface -- two
+// accepted points on one image column at the same height, the one nearer the
+// image's edge also nearer the robot -- and follows that plane z = h along
+// the column, row by row, away from the horizon. No search: at each row a
+// window is matched once, each of its rows at the disparity the plane gives
+// that row (a sheared window); it must score `accept_ncc`, score higher than
+// the same plane shifted by 1 and 2 px (a peak), and beat the scene model's
+// own disparity there by `model_margin` (else the floor or a wall explains
+// it as well). The walk stops at the first row that fails. A window centred
+// up to half its height past the surface's edge still lies mostly on it and
+// matches, so the last `window_half_height` rows are dropped. The rows kept
+// become visual points every pixel_stride rows, like the search's grid.
+
+#include <lvfusion/common/HeightBand.h>
+#include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include <lvfusion/evaluation/ModelEvaluator.h>
+#include <lvfusion/evaluation/RectifiedStereo.h>
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <vector>
+
+namespace lvf::depth
+{
+class HorizontalSurfaceGrowth
+{
+   public:
+	/** INI section [HorizontalSurfaceGrowth]. */
+	struct TOptions : public mrpt::config::CLoadableOptions
+	{
+		bool enabled = true;
+		/** Each row's sheared window must score this. Measured (seeded
+		 * rooms 1-6 / 31-36, corridor desk): 0.9 with a back-off of 3 rows
+		 * on a 7-row window gave the same recall as 0.95 and one phantom
+		 * bearing more in rooms 1-6. */
+		double acceptNcc = 0.95;
+		int windowHalfWidth = 5;  //!< [px]: 11 columns, as the search's window
+		/** [px]: 5 rows. Taller windows (7 rows) found fewer bearings
+		 * (rooms 1-6: 0.838 against 0.849, corridor desk 0.595 against
+		 * 0.630), the same phantoms. */
+		int windowHalfHeight = 2;
+		/** The plane must beat the model's own disparity by this NCC. */
+		double modelMargin = 0.05;
+		/** Two points are on one horizontal surface when their heights differ
+		 * by at most this [m]... */
+		double heightTolerance = 0.03;
+		/** ...and the one nearer the image's edge is at least this much
+		 * nearer the robot [m]. */
+		double minRangeStep = 0.02;
+		/** ...and at most this many grid strides apart on the column. */
+		int witnessStrides = 4;
+
+		void loadFromConfigFile(
+			const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+		void saveToConfigFile(
+			mrpt::config::CConfigFileBase& target, const std::string& section) const override;
+	};
+
+	explicit HorizontalSurfaceGrowth(const TOptions& options) : m_options(options) {}
+
+	/** Appends the grown points to `points` (the search's accepted points,
+	 * read as the evidence) and returns how many it added. `textureGate`:
+	 * the search's (a window flatter than this carries no evidence).
+	 * `stride`: the search's pixel_stride. */
+	size_t grow(
+		const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
+		const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate,
+		int stride, std::vector<VisualPoint>& points) const;
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	/** Another point of the column, `step` rows farther from the walk's
+	 * direction, on the same height and farther from the robot. */
+	bool hasWitness(
+		const VisualPoint& p, const std::vector<VisualPoint>& points, const std::vector<size_t>& column, int step,
+		int stride) const;
+	/** Follows the plane through `start` along column u, rows `step` at a
+	 * time, and appends the rows kept to `grown`. */
+	void walk(
+		const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
+		const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate, int stride,
+		int u, const VisualPoint& start, int step, std::vector<VisualPoint>& grown) const;
+
+	TOptions m_options;
+};
+
+}  // namespace lvf::depth

@@ -1,0 +1,233 @@
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/depth/HorizontalSurfaceGrowth.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace lvf::depth
+{
+using lvf::common::writeOption;
+
+void HorizontalSurfaceGrowth::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	lvf::common::IniSection ini(source, section);
+	enabled = ini.flag("enabled", enabled);
+	acceptNcc = ini.real("accept_ncc", acceptNcc, -1, 1);
+	windowHalfWidth = ini.integer("window_half_width", windowHalfWidth, 1, 50);
+	windowHalfHeight = ini.integer("window_half_height", windowHalfHeight, 0, 50);
+	modelMargin = ini.real("model_margin", modelMargin, 0, 2);
+	heightTolerance = ini.real("height_tolerance", heightTolerance, 0, 10);
+	minRangeStep = ini.real("min_range_step", minRangeStep, 0, 10);
+	witnessStrides = ini.integer("witness_strides", witnessStrides, 1, 1000);
+	ini.rejectUnknownKeys();
+}
+
+void HorizontalSurfaceGrowth::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	writeOption(c, s, "enabled", enabled, "follow horizontal surfaces the search found towards the camera, row by row (true/false)");
+	writeOption(c, s, "accept_ncc", acceptNcc, "each row's window, sheared as the plane shears it, must score this NCC [-1..1]");
+	writeOption(c, s, "window_half_width", windowHalfWidth, "that window's half width [px]");
+	writeOption(c, s, "window_half_height", windowHalfHeight, "its half height [px]; the last this many rows of a walk are dropped (the window straddles the edge there)");
+	writeOption(c, s, "model_margin", modelMargin, "the plane must beat the scene model's own disparity by this NCC");
+	writeOption(c, s, "height_tolerance", heightTolerance, "two search points are on one horizontal surface if their heights differ by at most this [m]");
+	writeOption(c, s, "min_range_step", minRangeStep, "and the one nearer the image's edge is at least this much nearer the robot [m]");
+	writeOption(c, s, "witness_strides", witnessStrides, "and they are at most this many pixel_stride steps apart on their column");
+}
+
+namespace
+{
+/** A left window matched against the right image under the hypothesis that
+ * it shows the horizontal plane z = h (robot frame): each window row at the
+ * disparity the plane gives that row's ray, the right row sampled between
+ * pixels by linear interpolation. */
+class PlaneWindow
+{
+   public:
+	PlaneWindow(
+		const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g, double h,
+		int halfWidth, int halfHeight)
+		: m_left(left),
+		  m_right(right),
+		  m_g(g),
+		  m_rotation(g.leftPose.getRotationMatrix().asEigen()),
+		  m_camera(g.leftPose.x(), g.leftPose.y(), g.leftPose.z()),
+		  m_h(h),
+		  m_halfWidth(halfWidth),
+		  m_halfHeight(halfHeight)
+	{
+	}
+
+	/** The ray of left pixel (u, v) in the robot frame (not normalised: its
+	 * camera-frame depth component is 1). */
+	Eigen::Vector3d ray(double u, double v) const
+	{
+		return m_rotation * Eigen::Vector3d(m_g.rayX(u), m_g.rayY(v), 1.0);
+	}
+
+	/** The plane's disparity at pixel (u, v), if its ray meets the plane in
+	 * front of the camera. */
+	std::optional<double> disparity(int u, int v) const
+	{
+		const double rz = ray(u, v).z();
+		if (std::abs(rz) < 1e-9) return std::nullopt;
+		const double depth = (m_h - m_camera.z()) / rz;
+		if (depth <= 0) return std::nullopt;
+		return m_g.fB() / depth;
+	}
+
+	/** The robot-frame point of pixel (u, v) at disparity d. */
+	Eigen::Vector3d point(int u, int v, double d) const { return m_camera + (m_g.fB() / d) * ray(u, v); }
+
+	struct Score
+	{
+		double ncc;
+		double leftStd;
+	};
+	/** NCC of the window centred on (u, v), every row `shift` px off the
+	 * plane's disparity; none if a window row leaves either image or misses
+	 * the plane, or a window is flat. */
+	std::optional<Score> score(int u, int v, double shift) const
+	{
+		if (v - m_halfHeight < 0 || v + m_halfHeight >= m_left.rows || u - m_halfWidth < 0 ||
+			u + m_halfWidth >= m_left.cols)
+			return std::nullopt;
+		double sl = 0, sr = 0, sll = 0, srr = 0, slr = 0;
+		for (int dy = -m_halfHeight; dy <= m_halfHeight; dy++)
+		{
+			const auto d = disparity(u, v + dy);
+			if (!d) return std::nullopt;
+			const double x0 = u - m_halfWidth + m_g.cxOffset - (*d + shift);
+			const int xi = static_cast<int>(std::floor(x0));
+			if (xi < 0 || xi + 2 * m_halfWidth + 1 >= m_right.cols) return std::nullopt;
+			const double a = x0 - xi;
+			const uint8_t* l = m_left.ptr<uint8_t>(v + dy) + u - m_halfWidth;
+			const uint8_t* r = m_right.ptr<uint8_t>(v + dy) + xi;
+			for (int k = 0; k <= 2 * m_halfWidth; k++)
+			{
+				const double lv = l[k], rv = (1 - a) * r[k] + a * r[k + 1];
+				sl += lv, sr += rv, sll += lv * lv, srr += rv * rv, slr += lv * rv;
+			}
+		}
+		const double n = double((2 * m_halfWidth + 1) * (2 * m_halfHeight + 1));
+		const double ml = sl / n, mr = sr / n;
+		const double varL = sll / n - ml * ml, varR = srr / n - mr * mr;
+		if (varL <= 1e-9 || varR <= 1e-9) return std::nullopt;
+		return Score{(slr / n - ml * mr) / std::sqrt(varL * varR), std::sqrt(varL)};
+	}
+
+   private:
+	const cv::Mat1b& m_left;
+	const cv::Mat1b& m_right;
+	const lvf::evaluation::RectifiedGeometry& m_g;
+	Eigen::Matrix3d m_rotation;
+	Eigen::Vector3d m_camera;
+	double m_h;
+	int m_halfWidth, m_halfHeight;
+};
+
+double groundRange(const VisualPoint& p) { return std::hypot(p.robot.x(), p.robot.y()); }
+}  // namespace
+
+bool HorizontalSurfaceGrowth::hasWitness(
+	const VisualPoint& p, const std::vector<VisualPoint>& points, const std::vector<size_t>& column, int step,
+	int stride) const
+{
+	const TOptions& o = m_options;
+	for (size_t j : column)
+	{
+		const VisualPoint& q = points[j];
+		const double rows = step * (p.v - q.v);
+		if (rows > 0 && rows <= o.witnessStrides * stride && std::abs(q.robot.z() - p.robot.z()) <= o.heightTolerance &&
+			groundRange(q) >= groundRange(p) + o.minRangeStep)
+			return true;
+	}
+	return false;
+}
+
+void HorizontalSurfaceGrowth::walk(
+	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
+	const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate, int stride,
+	int u, const VisualPoint& start, int step, std::vector<VisualPoint>& grown) const
+{
+	const TOptions& o = m_options;
+	const PlaneWindow plane(left, right, g, start.robot.z(), o.windowHalfWidth, o.windowHalfHeight);
+	struct Row
+	{
+		int v;
+		double disparity, ncc;
+	};
+	std::vector<Row> walked;
+	for (int v = static_cast<int>(start.v) + step;; v += step)
+	{
+		const auto d = plane.disparity(u, v);
+		const auto s = plane.score(u, v, 0.0);
+		if (!d || !s || s->ncc < o.acceptNcc || s->leftStd < textureGate) break;
+		bool peak = true;
+		for (double shift : {-2.0, -1.0, 1.0, 2.0})
+		{
+			const auto other = plane.score(u, v, shift);
+			peak = peak && !(other && other->ncc >= s->ncc);
+		}
+		if (!peak) break;
+		const float model = evaluation.modelDisparity(v, u);
+		if (model > 0)
+		{
+			const auto explained = plane.score(u, v, model - *d);
+			if (explained && explained->ncc > s->ncc - o.modelMargin) break;
+		}
+		walked.push_back({v, *d, s->ncc});
+	}
+	// The window straddles the edge for the last half-height rows.
+	const size_t keep = walked.size() > size_t(o.windowHalfHeight) ? walked.size() - size_t(o.windowHalfHeight) : 0;
+	for (size_t i = 0; i < keep; i++)
+	{
+		// Every stride-th row, as the search's grid, and the last one kept.
+		if ((i + 1) % size_t(stride) != 0 && i + 1 != keep) continue;
+		const Row& row = walked[i];
+		const Eigen::Vector3d x = plane.point(u, row.v, row.disparity);
+		if (band.contains(x.z()))
+			grown.push_back({static_cast<float>(u), static_cast<float>(row.v), static_cast<float>(row.disparity),
+				static_cast<float>(row.ncc), x});
+	}
+}
+
+size_t HorizontalSurfaceGrowth::grow(
+	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
+	const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate, int stride,
+	std::vector<VisualPoint>& points) const
+{
+	if (!m_options.enabled) return 0;
+	const double cameraHeight = g.leftPose.z();
+	std::map<int, std::vector<size_t>> byColumn;
+	for (size_t i = 0; i < points.size(); i++) byColumn[static_cast<int>(std::lround(points[i].u))].push_back(i);
+
+	std::vector<VisualPoint> grown;
+	for (auto& [u, indices] : byColumn)
+	{
+		std::sort(indices.begin(), indices.end(), [&](size_t a, size_t b) { return points[a].v < points[b].v; });
+		// A surface below the camera comes nearer down the image, one above
+		// it up the image: one walk each way per column, from the column's
+		// nearest point with a witness.
+		for (const int step : {1, -1})
+		{
+			const bool below = step > 0;
+			for (size_t k = 0; k < indices.size(); k++)
+			{
+				const VisualPoint& p = points[indices[below ? indices.size() - 1 - k : k]];
+				if ((p.robot.z() < cameraHeight) != below || !hasWitness(p, points, indices, step, stride)) continue;
+				walk(left, right, g, evaluation, band, textureGate, stride, u, p, step, grown);
+				break;
+			}
+		}
+	}
+	points.insert(points.end(), grown.begin(), grown.end());
+	return grown.size();
+}
+
+}  // namespace lvf::depth
