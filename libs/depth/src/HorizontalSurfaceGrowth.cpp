@@ -21,6 +21,7 @@ void HorizontalSurfaceGrowth::TOptions::loadFromConfigFile(
 	windowHalfWidth = ini.integer("window_half_width", windowHalfWidth, 1, 50);
 	windowHalfHeight = ini.integer("window_half_height", windowHalfHeight, 0, 50);
 	modelMargin = ini.real("model_margin", modelMargin, 0, 2);
+	heightSearch = ini.real("height_search", heightSearch, 0, 1);
 	heightTolerance = ini.real("height_tolerance", heightTolerance, 0, 10);
 	minRangeStep = ini.real("min_range_step", minRangeStep, 0, 10);
 	witnessStrides = ini.integer("witness_strides", witnessStrides, 1, 1000);
@@ -35,6 +36,7 @@ void HorizontalSurfaceGrowth::TOptions::saveToConfigFile(
 	writeOption(c, s, "window_half_width", windowHalfWidth, "that window's half width [px]");
 	writeOption(c, s, "window_half_height", windowHalfHeight, "its half height [px]; the last this many rows of a walk are dropped (the window straddles the edge there)");
 	writeOption(c, s, "model_margin", modelMargin, "the plane must beat the scene model's own disparity by this NCC");
+	writeOption(c, s, "height_search", heightSearch, "the plane's height is fitted to the images within this of the start point's (in 5 mm steps; 0: the point's own) [m]");
 	writeOption(c, s, "height_tolerance", heightTolerance, "two search points are on one horizontal surface if their heights differ by at most this [m]");
 	writeOption(c, s, "min_range_step", minRangeStep, "and the one nearer the image's edge is at least this much nearer the robot [m]");
 	writeOption(c, s, "witness_strides", witnessStrides, "and they are at most this many pixel_stride steps apart on their column");
@@ -150,13 +152,39 @@ bool HorizontalSurfaceGrowth::hasWitness(
 	return false;
 }
 
+double HorizontalSurfaceGrowth::fittedHeight(
+	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g, int u,
+	const VisualPoint& start, int step, int stride) const
+{
+	const TOptions& o = m_options;
+	// Two rows the search found on the surface: the start and one two grid
+	// rows behind it (away from the walk).
+	const int rows[] = {static_cast<int>(start.v), static_cast<int>(start.v) - 2 * step * stride};
+	double best = -4, fitted = start.robot.z();
+	const int steps = static_cast<int>(std::lround(o.heightSearch / kHeightSearchStep));
+	for (int k = -steps; k <= steps; k++)
+	{
+		const double h = start.robot.z() + k * kHeightSearchStep;
+		const PlaneWindow trial(left, right, g, h, o.windowHalfWidth, o.windowHalfHeight);
+		double total = 0;
+		for (int v : rows)
+		{
+			const auto s = trial.score(u, v, 0.0);
+			total += s ? s->ncc : -2;
+		}
+		if (total > best) best = total, fitted = h;
+	}
+	return fitted;
+}
+
 void HorizontalSurfaceGrowth::walk(
 	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
 	const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate, int stride,
 	int u, const VisualPoint& start, int step, std::vector<VisualPoint>& grown) const
 {
 	const TOptions& o = m_options;
-	const PlaneWindow plane(left, right, g, start.robot.z(), o.windowHalfWidth, o.windowHalfHeight);
+	const PlaneWindow plane(
+		left, right, g, fittedHeight(left, right, g, u, start, step, stride), o.windowHalfWidth, o.windowHalfHeight);
 	struct Row
 	{
 		int v;
