@@ -133,6 +133,22 @@ class PlaneWindow
 	int m_halfWidth, m_halfHeight;
 };
 
+/** Whether the window's NCC, over disparities shifted from the plane's,
+ * peaks within a pixel of it: the best of shifts 0 and +-1 px beats both
+ * +-2 px. A smooth texture's NCC peak spans a few pixels, so that a plane
+ * right to a fraction of a pixel can score a little under its neighbour at
+ * 1 px; requiring the plane itself to beat +-1 px stopped most walks on
+ * room 5's table top at their first rows (measurements.md). */
+bool peaksNearThePlane(const PlaneWindow& plane, int u, int v, double atPlane)
+{
+	double inner = atPlane, outer = -2;
+	for (const double shift : {-1.0, 1.0})
+		if (const auto s = plane.score(u, v, shift)) inner = std::max(inner, s->ncc);
+	for (const double shift : {-2.0, 2.0})
+		if (const auto s = plane.score(u, v, shift)) outer = std::max(outer, s->ncc);
+	return inner > outer;
+}
+
 double groundRange(const VisualPoint& p) { return std::hypot(p.robot.x(), p.robot.y()); }
 }  // namespace
 
@@ -196,13 +212,7 @@ void HorizontalSurfaceGrowth::walk(
 		const auto d = plane.disparity(u, v);
 		const auto s = plane.score(u, v, 0.0);
 		if (!d || !s || s->ncc < o.acceptNcc || s->leftStd < textureGate) break;
-		bool peak = true;
-		for (double shift : {-2.0, -1.0, 1.0, 2.0})
-		{
-			const auto other = plane.score(u, v, shift);
-			peak = peak && !(other && other->ncc >= s->ncc);
-		}
-		if (!peak) break;
+		if (!peaksNearThePlane(plane, u, v, s->ncc)) break;
 		const float model = evaluation.modelDisparity(v, u);
 		if (model > 0)
 		{

@@ -16,8 +16,9 @@
 // the column, row by row, away from the horizon (its height fitted to the
 // images near the start, within a few cm). No search: at each row a
 // window is matched once, each of its rows at the disparity the plane gives
-// that row (a sheared window); it must score `accept_ncc`, score higher than
-// the same plane shifted by 1 and 2 px (a peak), and beat the scene model's
+// that row (a sheared window); it must score `accept_ncc`, peak within a
+// pixel of the plane's disparity (the best of the plane and the plane
+// shifted by 1 px beating it shifted by 2 px), and beat the scene model's
 // own disparity there by `model_margin` (else the floor or a wall explains
 // it as well). The walk stops at the first row that fails. A window centred
 // up to half its height past the surface's edge still lies mostly on it and
