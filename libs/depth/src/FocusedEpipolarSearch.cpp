@@ -329,8 +329,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	out.outcome = cv::Mat1b::zeros(H, W);
 	auto& stats = out.stats;
 	const int stride = m_options.pixelStride;
-	const double textureGate =
-		lvf::evaluation::noiseRelativeGate(evaluation.noiseStd, m_options.textureNoiseRatio, m_options.minTextureStd);
+	const double textureGate = m_options.textureGate(evaluation.noiseStd);
 	for (int v = half; v < H - half; v += stride)
 		for (int u = half; u < W - half; u += stride)
 		{

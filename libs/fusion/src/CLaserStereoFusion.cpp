@@ -171,11 +171,9 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		auto found = lvf::depth::FocusedEpipolarSearch(m_options.depth)
 			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band,
 				m_options.floorHeight);
-		const double textureGate = lvf::evaluation::noiseRelativeGate(
-			r.evaluation.noiseStd, m_options.depth.textureNoiseRatio, m_options.depth.minTextureStd);
 		r.grownPoints = lvf::depth::HorizontalSurfaceGrowth(m_options.growth)
-			.grow(r.left, r.right, r.geometry, r.evaluation, m_options.band, textureGate, m_options.depth.pixelStride,
-				found.points);
+			.grow(r.left, r.right, r.geometry, r.evaluation, m_options.band,
+				m_options.depth.textureGate(r.evaluation.noiseStd), m_options.depth.pixelStride, found.points);
 		return found;
 	});
 	r.fused = timed(r.times.fuse, [&] {

@@ -109,6 +109,12 @@ class FocusedEpipolarSearch
 		 * ~1 grey level: Recycle recall 0.434 -> 0.604, no phantom. */
 		double textureNoiseRatio = 2.25;
 		double minTextureStd = 1.0;
+		/** The left window std a pixel needs to be searched, for an image
+		 * of this noise [grey levels]. */
+		double textureGate(double noiseStd) const
+		{
+			return lvf::evaluation::noiseRelativeGate(noiseStd, textureNoiseRatio, minTextureStd);
+		}
 		int peakContext = 8;  //!< NCC also scored this far outside the allowed set [px]
 		bool verifyFullLine = true;	 //!< accepted matches must beat the whole line
 		/** The right window of a match, matched back along the left row over
