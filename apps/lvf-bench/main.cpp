@@ -245,15 +245,19 @@ void printStageMedians(int passes)
 {
 	auto& f = FusionFixture::get();
 	// The fusion as configured; with the model evaluated over the whole
-	// image (the paper's way), which the faster grid evaluation replaces; and
+	// image (the paper's way), which the faster grid evaluation replaces;
 	// with every match searched at full resolution (no coarse-to-fine).
 	auto wholeImage = f.options;
 	wholeImage.evaluateSearchGridOnly = false;
 	auto fullResolution = f.options;
 	fullResolution.depth.coarseToFine = false;
+	// And with the shifted-window test the other way (what it costs).
+	auto shifted = f.options;
+	shifted.depth.shiftedWindows = !shifted.depth.shiftedWindows;
 	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
 		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
-		{"fusion, full-res search", fullResolution}};
+		{"fusion, full-res search", fullResolution},
+		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
 	lvf::bench::StageMedians medians;

@@ -33,6 +33,7 @@ MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h, RowGrid rows)
 	  leftPairs(neighbourPairs(left)),
 	  rightPairs(neighbourPairs(right)),
 	  forward(leftPairs, rightPairs, rightMean, rightStd, half),
+	  shifted(leftPairs, rightPairs, rightMean, rightStd, half),
 	  m_rows(rows),
 	  m_backward(rightPairs, leftPairs, m_leftMean, m_leftStd, half)
 {

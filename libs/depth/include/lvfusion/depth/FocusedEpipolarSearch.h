@@ -52,7 +52,7 @@ enum class SearchOutcome : uint8_t
 	Ambiguous,	//!< another peak, the model or the rest of the line scores as well
 	LeftRight,	//!< the match does not find its way back
 	OutOfBand,	//!< triangulated outside the robot's height band
-	CoreMismatch,  //!< the core window does not match there, or the model explains it as well
+	CoreMismatch,  //!< the core window does not match there, or the model explains it (or a side of it) as well
 	Accepted  //!< a visual point
 };
 
@@ -127,6 +127,19 @@ class FocusedEpipolarSearch
 		 * come out up to half a window too wide. */
 		int coreWindow = 5;
 		double coreAcceptNcc = 0.5;	 //!< the core window's NCC at the match
+		/** The match must not be explained better by the model on a window
+		 * of the same size shifted sideways until the pixel lies on its
+		 * edge (at least accept_ncc there, and better than either shifted
+		 * window at the match): the core window is smaller, but still
+		 * reaches onto an object a few pixels away. Phantom bearings, rooms
+		 * 1-6 / 11-16 / 21-26 / 31-36 / held-out 41-46 / 51-56: 19 / 17 /
+		 * 12 / 25 / 12 / 28 -> 15 / 15 / 9 / 19 / 8 / 20, recall bearings
+		 * +1 / 0 / -1 / -2 / -3 / -3 (an obstacle's outermost bearing).
+		 * Off by default: in the closed loop (overhang rooms 1-100, fused
+		 * VFH) it reached 98 rooms instead of 97, but its routes changed
+		 * and room 50's went round the side of a floating box the cameras
+		 * never saw, into it (share/doc/lvfusion/measurements.md). */
+		bool shiftedWindows = false;
 		/** Find the match, and verify that it is unique and finds its way
 		 * back, on the half-resolution pair (windows of half the side, half
 		 * the columns: ~8x fewer products), then refine it on the full
@@ -199,6 +212,10 @@ class FocusedEpipolarSearch
 	/** The tests taken at full resolution around the best column: strong
 	 * enough, a true peak, the core window agrees, the model explains the
 	 * pixel clearly worse. Fills `m` and returns whether all pass. */
+	/** The shifted-window test (TOptions::shiftedWindows) for the match at
+	 * full-resolution right column matchX: the model explains one side of
+	 * the pixel, and better than the match explains either. */
+	bool modelExplainsASide(MatchingLevel& full, const PixelQuery& q, int matchX) const;
 	bool passesLocalTests(MatchingLevel& full, const PixelQuery& q, int bestX, float best, Match& m) const;
 	/** No other peak of the line within [xNear, xFar] scores within the
 	 * uniqueness margin of `best` at `bestX`. */

@@ -33,6 +33,9 @@ class MatchingLevel
 	cv::Mat1i leftPairs, rightPairs;  //!< both as neighbour pairs (CrossTerms.h)
 	cv::Mat1f rightMean, rightStd;
 	EpipolarScores forward;	 //!< a left window against the right row
+	/** Another left window against the right row: a window shifted beside
+	 * the one `forward` holds (FocusedEpipolarSearch's shifted windows). */
+	EpipolarScores shifted;
 
 	/** A right window against the left row (the left-right check). */
 	EpipolarScores& backward();
