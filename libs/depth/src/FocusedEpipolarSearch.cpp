@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -225,7 +226,8 @@ bool FocusedEpipolarSearch::modelExplainsASide(MatchingLevel& full, const PixelQ
 		int shift;
 		float mean, deviation;
 	};
-	std::vector<Side> sides;
+	std::array<Side, 2> sides;
+	size_t sideCount = 0;
 	for (const int shift : {-h, h})
 	{
 		// The shifted window is the one centred half a window to the side,
@@ -241,13 +243,14 @@ bool FocusedEpipolarSearch::modelExplainsASide(MatchingLevel& full, const PixelQ
 		const float n = static_cast<float>((2 * h + 1) * (2 * h + 1));
 		const float mean = static_cast<float>(sum) / n;
 		const float deviation = std::sqrt(std::max(static_cast<float>(squares) / n - mean * mean, 0.f));
-		if (deviation > 0) sides.push_back({shift, mean, deviation});
+		if (deviation > 0) sides[sideCount++] = {shift, mean, deviation};
 	}
 	// The best of right columns [x0, x1] (as seen from the pixel) over both sides.
 	auto bestOfSides = [&](int x0, int x1) {
 		float best = -1.f;
-		for (const Side& side : sides)
+		for (size_t k = 0; k < sideCount; k++)
 		{
+			const Side& side = sides[k];
 			EpipolarScores& shifted = full.shifted;
 			shifted.reset(q.u + side.shift, q.v, side.mean, side.deviation);
 			shifted.compute(x0 + side.shift, x1 + side.shift);

@@ -209,13 +209,13 @@ class FocusedEpipolarSearch
 	};
 	Match matchAtFullResolution(MatchingLevel& full, const PixelQuery& q) const;
 	Match matchCoarseToFine(MatchingLevel& full, MatchingLevel& coarse, const PixelQuery& q) const;
-	/** The tests taken at full resolution around the best column: strong
-	 * enough, a true peak, the core window agrees, the model explains the
-	 * pixel clearly worse. Fills `m` and returns whether all pass. */
 	/** The shifted-window test (TOptions::shiftedWindows) for the match at
 	 * full-resolution right column matchX: the model explains one side of
 	 * the pixel, and better than the match explains either. */
 	bool modelExplainsASide(MatchingLevel& full, const PixelQuery& q, int matchX) const;
+	/** The tests taken at full resolution around the best column: strong
+	 * enough, a true peak, the core window agrees, the model explains the
+	 * pixel clearly worse. Fills `m` and returns whether all pass. */
 	bool passesLocalTests(MatchingLevel& full, const PixelQuery& q, int bestX, float best, Match& m) const;
 	/** No other peak of the line within [xNear, xFar] scores within the
 	 * uniqueness margin of `best` at `bestX`. */
