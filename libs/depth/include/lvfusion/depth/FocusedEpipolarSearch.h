@@ -135,9 +135,9 @@ class FocusedEpipolarSearch
 		 * 1-6 / 11-16 / 21-26 / 31-36 / held-out 41-46 / 51-56: 19 / 17 /
 		 * 12 / 25 / 12 / 28 -> 15 / 15 / 9 / 19 / 8 / 20, recall bearings
 		 * +1 / 0 / -1 / -2 / -3 / -3 (an obstacle's outermost bearing).
-		 * Off by default: in the closed loop (overhang rooms 1-100, fused
-		 * VFH) it reached 98 rooms instead of 97, but its routes changed
-		 * and room 50's went round the side of a floating box the cameras
+		 * Off by default: in the closed loop (overhang rooms 1-300, fused
+		 * VFH) it reached 296 rooms as shipped, but its routes changed and
+		 * two (50, 151) went round the side of a floating box the cameras
 		 * never saw, into it (share/doc/lvfusion/measurements.md). */
 		bool shiftedWindows = false;
 		/** Find the match, and verify that it is unique and finds its way
