@@ -41,8 +41,7 @@ std::vector<VisualPoint> disparityToPoints(
 	const cv::Mat1f& disparity, const lvf::evaluation::RectifiedGeometry& g,
 	const HeightBand& band, double zMin, double zMax, int stride)
 {
-	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
-	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
+	const Eigen::Vector3d C = g.cameraCentre();
 	std::vector<VisualPoint> points;
 	for (int v = 0; v < disparity.rows; v += stride)
 		for (int u = 0; u < disparity.cols; u += stride)
@@ -51,7 +50,7 @@ std::vector<VisualPoint> disparityToPoints(
 			if (!(d > 0)) continue;
 			const double Z = g.fB() / d;
 			if (Z < zMin || Z > zMax) continue;
-			const Eigen::Vector3d p = C + Z * (Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0));
+			const Eigen::Vector3d p = C + Z * g.robotRay(u, v);
 			if (band.contains(p.z()))
 				points.push_back({static_cast<float>(u), static_cast<float>(v), d, 1.f, p});
 		}

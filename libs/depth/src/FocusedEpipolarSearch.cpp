@@ -134,6 +134,28 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 
 namespace
 {
+/** The sum and the sum of squares of the grey levels of the (2 half + 1)^2
+ * left window centred at (u, v), exact integers from a level's neighbour
+ * pairs (CrossTerms.h). */
+struct WindowSums
+{
+	int32_t sum = 0, squares = 0;
+};
+WindowSums leftWindowSums(const MatchingLevel& level, int u, int v, int half)
+{
+	WindowSums w;
+	for (int dy = -half; dy <= half; dy++)
+	{
+		const int32_t* l = level.leftPairs.ptr<int32_t>(v + dy) + u;
+		for (int dx = -half; dx <= half; dx++)
+		{
+			const int32_t a = pixelOf(l[dx]);
+			w.sum += a, w.squares += a * a;
+		}
+	}
+	return w;
+}
+
 /** NCC of the (2 half + 1)^2 window centred at left (u, v) against right
  * windows on its row, from the neighbour-pair images (CrossTerms.h): the
  * left window's sums once for all, every sum an exact integer, the formula
@@ -142,17 +164,8 @@ class CoreWindowNcc
 {
    public:
 	CoreWindowNcc(const MatchingLevel& level, int u, int v, int half)
-		: m_level(level), m_u(u), m_v(v), m_half(half)
+		: m_level(level), m_u(u), m_v(v), m_half(half), m_left(leftWindowSums(level, u, v, half))
 	{
-		for (int dy = -half; dy <= half; dy++)
-		{
-			const int32_t* l = level.leftPairs.ptr<int32_t>(v + dy) + u;
-			for (int dx = -half; dx <= half; dx++)
-			{
-				const int32_t a = pixelOf(l[dx]);
-				m_sumLeft += a, m_sumLeftSquares += a * a;
-			}
-		}
 	}
 
 	float at(int x) const
@@ -170,7 +183,7 @@ class CoreWindowNcc
 			}
 		}
 		const double n = (2 * m_half + 1) * (2 * m_half + 1);
-		const double sl = m_sumLeft, sll = m_sumLeftSquares;
+		const double sl = m_left.sum, sll = m_left.squares;
 		const double cov = slr - sl * sr / n, varL = sll - sl * sl / n, varR = srr - double(sr) * sr / n;
 		return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
 	}
@@ -178,7 +191,7 @@ class CoreWindowNcc
    private:
 	const MatchingLevel& m_level;
 	int m_u, m_v, m_half;
-	int32_t m_sumLeft = 0, m_sumLeftSquares = 0;
+	WindowSums m_left;
 };
 
 }  // namespace
@@ -234,15 +247,10 @@ bool FocusedEpipolarSearch::modelExplainsASide(MatchingLevel& full, const PixelQ
 		// paired at the same disparity half a window to the side.
 		const int u = q.u + shift;
 		if (u < h || u > full.leftPairs.cols - 1 - h) continue;
-		int32_t sum = 0, squares = 0;
-		for (int dy = -h; dy <= h; dy++)
-		{
-			const int32_t* row = full.leftPairs.ptr<int32_t>(q.v + dy) + u;
-			for (int dx = -h; dx <= h; dx++) sum += pixelOf(row[dx]), squares += pixelOf(row[dx]) * pixelOf(row[dx]);
-		}
+		const WindowSums w = leftWindowSums(full, u, q.v, h);
 		const float n = static_cast<float>((2 * h + 1) * (2 * h + 1));
-		const float mean = static_cast<float>(sum) / n;
-		const float deviation = std::sqrt(std::max(static_cast<float>(squares) / n - mean * mean, 0.f));
+		const float mean = static_cast<float>(w.sum) / n;
+		const float deviation = std::sqrt(std::max(static_cast<float>(w.squares) / n - mean * mean, 0.f));
 		if (deviation > 0) sides[sideCount++] = {shift, mean, deviation};
 	}
 	// The best of right columns [x0, x1] (as seen from the pixel) over both sides.
@@ -384,8 +392,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	std::unique_ptr<MatchingLevel> coarse;
 	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
 
-	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
-	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
+	const Eigen::Vector3d C = g.cameraCentre();
 	const double fB = g.fB();
 	out.outcome = cv::Mat1b::zeros(H, W);
 	auto& stats = out.stats;
@@ -406,7 +413,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 				continue;
 			}
 			const double dModel = evaluation.modelDisparity(v, u);
-			const Eigen::Vector3d ray = Rc * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0);
+			const Eigen::Vector3d ray = g.robotRay(u, v);
 			const bool floorModel = m_options.floorDisparityMargin > 0 && dModel > 0 &&
 				std::abs(C.z() + fB / dModel * ray.z() - floorHeight) < kOnTheFloor;
 			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
@@ -452,7 +459,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 			// columns, where no window fits: their match is the depth there
 			// too (rays at the image's edge would see nothing otherwise).
 			auto extendTo = [&](int ue) {
-				const Eigen::Vector3d edgeRay = Rc * Eigen::Vector3d(g.rayX(ue), g.rayY(v), 1.0);
+				const Eigen::Vector3d edgeRay = g.robotRay(ue, v);
 				const Eigen::Vector3d pe = C + (fB / disparity) * edgeRay;
 				if (band.contains(pe.z()))
 					out.points.push_back({static_cast<float>(ue), static_cast<float>(v),

@@ -57,26 +57,18 @@ class PlaneWindow
 		: m_left(left),
 		  m_right(right),
 		  m_g(g),
-		  m_rotation(g.leftPose.getRotationMatrix().asEigen()),
-		  m_camera(g.leftPose.x(), g.leftPose.y(), g.leftPose.z()),
+		  m_camera(g.cameraCentre()),
 		  m_h(h),
 		  m_halfWidth(halfWidth),
 		  m_halfHeight(halfHeight)
 	{
 	}
 
-	/** The ray of left pixel (u, v) in the robot frame (not normalised: its
-	 * camera-frame depth component is 1). */
-	Eigen::Vector3d ray(double u, double v) const
-	{
-		return m_rotation * Eigen::Vector3d(m_g.rayX(u), m_g.rayY(v), 1.0);
-	}
-
 	/** The plane's disparity at pixel (u, v), if its ray meets the plane in
 	 * front of the camera. */
 	std::optional<double> disparity(int u, int v) const
 	{
-		const double rz = ray(u, v).z();
+		const double rz = m_g.robotRay(u, v).z();
 		if (std::abs(rz) < 1e-9) return std::nullopt;
 		const double depth = (m_h - m_camera.z()) / rz;
 		if (depth <= 0) return std::nullopt;
@@ -84,7 +76,7 @@ class PlaneWindow
 	}
 
 	/** The robot-frame point of pixel (u, v) at disparity d. */
-	Eigen::Vector3d point(int u, int v, double d) const { return m_camera + (m_g.fB() / d) * ray(u, v); }
+	Eigen::Vector3d point(int u, int v, double d) const { return m_camera + (m_g.fB() / d) * m_g.robotRay(u, v); }
 
 	struct Score
 	{
@@ -127,7 +119,6 @@ class PlaneWindow
 	const cv::Mat1b& m_left;
 	const cv::Mat1b& m_right;
 	const lvf::evaluation::RectifiedGeometry& m_g;
-	Eigen::Matrix3d m_rotation;
 	Eigen::Vector3d m_camera;
 	double m_h;
 	int m_halfWidth, m_halfHeight;

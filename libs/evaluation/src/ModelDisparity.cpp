@@ -48,7 +48,7 @@ cv::Mat1f renderModelDisparity(
 	const lvf::model::PlanarSceneModel& model, const RectifiedGeometry& g)
 {
 	const Eigen::Matrix3d Rc = g.leftPose.getRotationMatrix().asEigen();
-	const Eigen::Vector3d C(g.leftPose.x(), g.leftPose.y(), g.leftPose.z());
+	const Eigen::Vector3d C = g.cameraCentre();
 	// Plane n . X = c (robot frame) -> disparity fB / Z = fB (n_c . ray) / c_c
 	// with n_c = Rc^T n and c_c = c - n . C (camera frame).
 	auto planeDisparity = [&](const Eigen::Vector3d& n, double c, bool& ok) {

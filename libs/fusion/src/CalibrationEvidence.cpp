@@ -12,7 +12,6 @@ CalibrationEvidence calibrationEvidence(
 	double floorHeight, double agreeingNcc, int first, int stride)
 {
 	CalibrationEvidence out;
-	const Eigen::Matrix3d R = g.leftPose.getRotationMatrix().asEigen();
 	const double height = g.leftPose.z() - floorHeight;	 // camera above the floor [m]
 	for (int v = first; v < g.size.height; v += stride)
 		for (int u = first; u < g.size.width; u += stride)
@@ -23,7 +22,7 @@ CalibrationEvidence calibrationEvidence(
 			out.judged++;
 			out.disagreeing += !agrees;
 			// Depth Z of the floor along this pixel's ray: height + Z ray.z = 0.
-			const double down = -(R * Eigen::Vector3d(g.rayX(u), g.rayY(v), 1.0)).z();
+			const double down = -g.robotRay(u, v).z();
 			if (down <= 0) continue;
 			const double floorDisparity = g.fB() * down / height;
 			if (std::abs(evaluation.modelDisparity(v, u) - floorDisparity) > 1e-3 * floorDisparity) continue;

@@ -11,6 +11,7 @@
 // left camera's pose on the robot is kept so that pixels can be turned into
 // robot-frame rays and back.
 
+#include <Eigen/Core>
 #include <mrpt/obs/CObservationStereoImages.h>
 #include <mrpt/poses/CPose3D.h>
 #include <opencv2/core.hpp>
@@ -33,6 +34,15 @@ struct RectifiedGeometry
 	/** Normalised ray of pixel (u, v) in the rectified left camera frame. */
 	double rayX(double u) const { return (u - cx) / f; }
 	double rayY(double v) const { return (v - cy) / f; }
+	/** The ray of pixel (u, v) in the robot frame, not normalised: its
+	 * component along the camera's axis is 1, so the point at depth Z is
+	 * cameraCentre() + Z * robotRay(u, v). */
+	Eigen::Vector3d robotRay(double u, double v) const
+	{
+		return leftPose.getRotationMatrix().asEigen() * Eigen::Vector3d(rayX(u), rayY(v), 1.0);
+	}
+	/** The rectified left camera's centre in the robot frame [m]. */
+	Eigen::Vector3d cameraCentre() const { return {leftPose.x(), leftPose.y(), leftPose.z()}; }
 };
 
 class RectifiedStereo
