@@ -251,13 +251,16 @@ void printStageMedians(int passes)
 	wholeImage.evaluateSearchGridOnly = false;
 	auto fullResolution = f.options;
 	fullResolution.depth.coarseToFine = false;
-	// And with the shifted-window test the other way (what it costs).
+	// And with each option that ships off the other way (what it costs).
 	auto shifted = f.options;
 	shifted.depth.shiftedWindows = !shifted.depth.shiftedWindows;
+	auto subpixel = f.options;
+	subpixel.depth.subpixelIterations = subpixel.depth.subpixelIterations > 0 ? 0 : 2;
 	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
 		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
 		{"fusion, full-res search", fullResolution},
-		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted}};
+		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted},
+		{subpixel.depth.subpixelIterations > 0 ? "fusion, sub-pixel LK on" : "fusion, sub-pixel LK off", subpixel}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
 	lvf::bench::StageMedians medians;

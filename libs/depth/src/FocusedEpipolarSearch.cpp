@@ -5,6 +5,7 @@
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 #include "AllowedColumns.h"
+#include "SubpixelRefinement.h"
 #include <opencv2/imgproc.hpp>
 
 #include <Eigen/Dense>
@@ -45,6 +46,8 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 			ini.sourceName(), "[" + section + "] core_window", "must be odd, or 0 for off");
 	coreAcceptNcc = ini.real("core_accept_ncc", coreAcceptNcc, -1, 1);
 	shiftedWindows = ini.flag("shifted_windows", shiftedWindows);
+	subpixelIterations = ini.integer("subpixel_iterations", subpixelIterations, 0, 20);
+	subpixelSigma = ini.real("subpixel_sigma", subpixelSigma, 0.5, 100);
 	ini.rejectUnknownKeys();
 }
 
@@ -69,6 +72,8 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, better than at the model's disparity, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
 	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
 	writeOption(c, s, "shifted_windows", shiftedWindows, "a match must not be explained better by the model on a window shifted sideways until the pixel lies on its edge (the background beside an object's silhouette): a quarter fewer phantom bearings, a few obstacle edges lost; off by default (README)");
+	writeOption(c, s, "subpixel_iterations", subpixelIterations, "Lucas-Kanade steps along the row after the parabola, on a window weighted round its centre, so the centre pixel's surface decides the sub-pixel disparity (2: fewer phantoms, more recall; off by default, README); 0: the parabola alone");
+	writeOption(c, s, "subpixel_sigma", subpixelSigma, "those weights' Gaussian standard deviation [px]");
 	writeOption(c, s, "coarse_to_fine", coarseToFine, "find and verify matches on the half-resolution pair, refine them on the full one (~8x fewer products)");
 	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
 }
@@ -398,6 +403,7 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	auto& stats = out.stats;
 	const int stride = m_options.pixelStride;
 	const double textureGate = m_options.textureGate(evaluation.noiseStd);
+	const SubpixelRefinement refinement(half, m_options.subpixelSigma);
 	for (int v = half; v < H - half; v += stride)
 		for (int u = half; u < W - half; u += stride)
 		{
@@ -441,10 +447,12 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 				mark(SearchOutcome::CoreMismatch, stats.rejectedCore);
 				continue;
 			}
-			// Parabola through the peak and its neighbours.
+			// Parabola through the peak and its neighbours, then the images.
 			const float curvature = m.before - 2 * m.score + m.after;
 			const float shift = curvature < 0 ? 0.5f * (m.before - m.after) / curvature : 0.f;
-			const double disparity = u + g.cxOffset - (m.x + shift);
+			const double column =
+				refinement.refine(full.left, full.right, u, v, m.x + shift, m_options.subpixelIterations);
+			const double disparity = u + g.cxOffset - column;
 			if (disparity <= 0) continue;
 			const Eigen::Vector3d p = C + (fB / disparity) * ray;
 			if (!band.contains(p.z()))
