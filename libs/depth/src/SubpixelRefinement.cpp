@@ -27,7 +27,11 @@ SubpixelRefinement::SubpixelRefinement(int half, double sigma) : m_half(half)
 	m_weights.resize(size_t(side * side));
 	for (int dv = -half; dv <= half; dv++)
 		for (int du = -half; du <= half; du++)
-			m_weights[size_t((dv + half) * side + du + half)] = std::exp(-0.5 * (du * du + dv * dv) / (sigma * sigma));
+		{
+			const double w = std::exp(-0.5 * (du * du + dv * dv) / (sigma * sigma));
+			m_weights[size_t((dv + half) * side + du + half)] = w;
+			m_weightSum += w;
+		}
 }
 
 double SubpixelRefinement::refine(
@@ -44,7 +48,8 @@ double SubpixelRefinement::refine(
 		const double w1 = x - std::floor(x), w0 = 1 - w1;
 		// Weighted sums for the least squares of l ~ a r + b + c g (g: r's
 		// gradient; the step is c / a), with b eliminated by centring.
-		double sw = 0, sr = 0, sg = 0, sl = 0, srr = 0, srg = 0, sgg = 0, srl = 0, sgl = 0;
+		const double sw = m_weightSum;
+		double sr = 0, sg = 0, sl = 0, srr = 0, srg = 0, sgg = 0, srl = 0, sgl = 0;
 		const double* weight = m_weights.data();
 		for (int dv = -half; dv <= half; dv++)
 		{
@@ -55,7 +60,6 @@ double SubpixelRefinement::refine(
 				const double ri = w0 * r[k] + w1 * r[k + 1];
 				const double gi = 0.5 * (w0 * (r[k + 1] - r[k - 1]) + w1 * (r[k + 2] - r[k]));
 				const double w = *weight, li = l[k];
-				sw += w;
 				sr += w * ri;
 				sg += w * gi;
 				sl += w * li;

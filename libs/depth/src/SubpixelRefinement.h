@@ -38,6 +38,7 @@ class SubpixelRefinement
    private:
 	int m_half;
 	std::vector<double> m_weights;	//!< row by row over the window
+	double m_weightSum = 0;
 };
 
 }  // namespace lvf::depth
