@@ -1,5 +1,6 @@
 #include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/EpipolarScores.h>
+#include "VectorClones.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,15 +45,6 @@ void EpipolarScores::reset(int u, int v, float leftMean, float leftStd)
 	m_leftMean = leftMean;
 	m_leftStd = leftStd;
 }
-
-// The score formula is cloned for AVX2 (picked at load time where the CPU
-// has it; a feature test: "arch=..." clones test the CPU model and miss
-// newer ones).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define LVF_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define LVF_VECTOR_CLONES
-#endif
 
 namespace
 {
