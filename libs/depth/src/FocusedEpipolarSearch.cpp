@@ -1,12 +1,9 @@
-#include <lvfusion/common/IniSection.h>
-#include <lvfusion/common/InputError.h>
-#include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 #include "AllowedColumns.h"
+#include "CoreWindowNcc.h"
 #include "SubpixelRefinement.h"
-#include <opencv2/imgproc.hpp>
 
 #include <Eigen/Dense>
 #include <array>
@@ -16,67 +13,7 @@
 
 namespace lvf::depth
 {
-using lvf::common::writeOption;
 using lvf::evaluation::PixelState;
-
-void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& source, const std::string& section)
-{
-	lvf::common::IniSection ini(source, section);
-	criterionA = ini.flag("criterion_a", criterionA);
-	dAllow = ini.real("d_allow", dAllow, 0, 100);
-	floorDisparityMargin = ini.real("floor_disparity_margin", floorDisparityMargin, 0, 1000);
-	criterionB = ini.flag("criterion_b", criterionB);
-	criterionC = ini.flag("criterion_c", criterionC);
-	zMin = ini.real("z_min", zMin, 0.01, 1000);
-	zMax = ini.real("z_max", zMax, zMin, 1000);
-	boundByBand = ini.flag("bound_by_height_band", boundByBand);
-	pixelStride = ini.integer("pixel_stride", pixelStride, 1, 32);
-	acceptNcc = ini.real("accept_ncc", acceptNcc, -1, 1);
-	uniquenessMargin = ini.real("uniqueness_margin", uniquenessMargin, 0, 2);
-	peakContext = ini.integer("peak_context", peakContext, 1, 64);
-	textureNoiseRatio = ini.real("texture_noise_ratio", textureNoiseRatio, 0, 100);
-	minTextureStd = ini.real("min_texture_std", minTextureStd, 0, 128);
-	verifyFullLine = ini.flag("verify_full_line", verifyFullLine);
-	leftRightCheck = ini.flag("left_right_check", leftRightCheck);
-	coarseToFine = ini.flag("coarse_to_fine", coarseToFine);
-	coreWindow = ini.integer("core_window", coreWindow, 0, 31);
-	if (coreWindow % 2 == 0 && coreWindow != 0)
-		throw lvf::common::InputError(
-			ini.sourceName(), "[" + section + "] core_window", "must be odd, or 0 for off");
-	coreAcceptNcc = ini.real("core_accept_ncc", coreAcceptNcc, -1, 1);
-	shiftedWindows = ini.flag("shifted_windows", shiftedWindows);
-	subpixelIterations = ini.integer("subpixel_iterations", subpixelIterations, 0, 20);
-	subpixelSigma = ini.real("subpixel_sigma", subpixelSigma, 0.5, 100);
-	ini.rejectUnknownKeys();
-}
-
-void FocusedEpipolarSearch::TOptions::saveToConfigFile(
-	mrpt::config::CConfigFileBase& c, const std::string& s) const
-{
-	writeOption(c, s, "criterion_a", criterionA, "search only |Z - Z_laser| >= d_allow (paper Fig. 6a)");
-	writeOption(c, s, "d_allow", dAllow, "criterion a's margin around the model depth [m]");
-	writeOption(c, s, "floor_disparity_margin", floorDisparityMargin, "where the model is the floor, criterion a's margin in front of it at most this much disparity, the band's lower edge deciding the rest (with bound_by_height_band; finds obstacles a few cm tall on rigs that resolve them); 0: off, d_allow as on walls [px]");
-	writeOption(c, s, "criterion_b", criterionB, "search only Z <= Z_laser, in front of the model (Fig. 6b)");
-	writeOption(c, s, "criterion_c", criterionC, "search only z_min <= Z <= z_max (Fig. 6c)");
-	writeOption(c, s, "z_min", zMin, "nearest depth searched [m]");
-	writeOption(c, s, "z_max", zMax, "farthest depth searched [m]");
-	writeOption(c, s, "bound_by_height_band", boundByBand, "search only depths whose point lies in the robot height band");
-	writeOption(c, s, "pixel_stride", pixelStride, "search every n-th inconsistent pixel along rows and columns");
-	writeOption(c, s, "accept_ncc", acceptNcc, "a match must score at least this NCC [-1..1]");
-	writeOption(c, s, "uniqueness_margin", uniquenessMargin, "any other NCC peak must be lower by this much");
-	writeOption(c, s, "texture_noise_ratio", textureNoiseRatio, "search only windows whose std is at least this many times the image's noise: matching needs more texture than checking");
-	writeOption(c, s, "min_texture_std", minTextureStd, "and at least this, whatever the noise [grey levels]");
-	writeOption(c, s, "peak_context", peakContext, "NCC also scored this far outside the allowed range, so a peak cut by a bound is seen [px]");
-	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
-	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, better than at the model's disparity, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
-	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
-	writeOption(c, s, "shifted_windows", shiftedWindows, "a match must not be explained better by the model on a window shifted sideways until the pixel lies on its edge (the background beside an object's silhouette): a quarter fewer phantom bearings, a few obstacle edges lost; off by default (README)");
-	writeOption(c, s, "subpixel_iterations", subpixelIterations, "Lucas-Kanade steps along the row after the parabola, on a window weighted round its centre, so the centre pixel's surface decides the sub-pixel disparity (2: fewer phantoms, more recall; off by default, README); 0: the parabola alone");
-	writeOption(c, s, "subpixel_sigma", subpixelSigma, "those weights' Gaussian standard deviation [px]");
-	writeOption(c, s, "coarse_to_fine", coarseToFine, "find and verify matches on the half-resolution pair, refine them on the full one (~8x fewer products)");
-	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");
-}
 
 namespace
 {
@@ -136,70 +73,6 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 	}
 	return set;
 }
-
-namespace
-{
-/** The sum and the sum of squares of the grey levels of the (2 half + 1)^2
- * left window centred at (u, v), exact integers from a level's neighbour
- * pairs (CrossTerms.h). */
-struct WindowSums
-{
-	int32_t sum = 0, squares = 0;
-};
-WindowSums leftWindowSums(const MatchingLevel& level, int u, int v, int half)
-{
-	WindowSums w;
-	for (int dy = -half; dy <= half; dy++)
-	{
-		const int32_t* l = level.leftPairs.ptr<int32_t>(v + dy) + u;
-		for (int dx = -half; dx <= half; dx++)
-		{
-			const int32_t a = pixelOf(l[dx]);
-			w.sum += a, w.squares += a * a;
-		}
-	}
-	return w;
-}
-
-/** NCC of the (2 half + 1)^2 window centred at left (u, v) against right
- * windows on its row, from the neighbour-pair images (CrossTerms.h): the
- * left window's sums once for all, every sum an exact integer, the formula
- * in double. A right window not wholly inside the image scores -1. */
-class CoreWindowNcc
-{
-   public:
-	CoreWindowNcc(const MatchingLevel& level, int u, int v, int half)
-		: m_level(level), m_u(u), m_v(v), m_half(half), m_left(leftWindowSums(level, u, v, half))
-	{
-	}
-
-	float at(int x) const
-	{
-		if (x - m_half < 0 || x + m_half >= m_level.rightPairs.cols) return -1.f;
-		int32_t sr = 0, srr = 0, slr = 0;
-		for (int dy = -m_half; dy <= m_half; dy++)
-		{
-			const int32_t* l = m_level.leftPairs.ptr<int32_t>(m_v + dy) + m_u;
-			const int32_t* r = m_level.rightPairs.ptr<int32_t>(m_v + dy) + x;
-			for (int dx = -m_half; dx <= m_half; dx++)
-			{
-				const int32_t a = pixelOf(l[dx]), b = pixelOf(r[dx]);
-				sr += b, srr += b * b, slr += a * b;
-			}
-		}
-		const double n = (2 * m_half + 1) * (2 * m_half + 1);
-		const double sl = m_left.sum, sll = m_left.squares;
-		const double cov = slr - sl * sr / n, varL = sll - sl * sl / n, varR = srr - double(sr) * sr / n;
-		return varL > 0 && varR > 0 ? static_cast<float>(cov / std::sqrt(varL * varR)) : -1.f;
-	}
-
-   private:
-	const MatchingLevel& m_level;
-	int m_u, m_v, m_half;
-	WindowSums m_left;
-};
-
-}  // namespace
 
 bool FocusedEpipolarSearch::beatsTheRestOfTheLine(
 	EpipolarScores& scores, int bestX, float best, int xNear, int xFar) const
