@@ -3,7 +3,8 @@
 // every true obstacle, and a target the robot has seen walled in on all
 // sides is reported unreachable; round an overhang the cameras saw only the
 // front of, the path keeps off its unseen far part; in closed loop the robot
-// goes round a U-shaped trap on the plan and reaches the target.
+// goes round a U-shaped trap on the plan and reaches the target. What the
+// navigator senses: vision's obstacles grown by a margin, the laser's not.
 
 #include <lvfusion/navigation/GlobalGuidance.h>
 #include <lvfusion/navigation/NavigationRun.h>
@@ -154,6 +155,45 @@ TEST(GlobalGuidance, KeepsOffTheUnseenFarPartOfAnOverhangVisionSawTheFrontOf)
 	const auto infront = nav::planGuidance(grid, {0, 0}, {1.2, 0.0}, o);
 	ASSERT_EQ(infront.status, nav::Guidance::Status::Path) << infront.detail;
 	EXPECT_LT(infront.pathLength, 1.2 + 0.1);
+}
+
+// What the navigator senses: the cells only vision found occupied grown by
+// vision_obstacle_margin, the laser's as they are. A floating box's near
+// face (x = 2.0 m, seen by the cameras only) comes 0.1 m nearer with a
+// 0.1 m margin; the wall behind it (x = 5.0 m, the laser's) stays put.
+TEST(LocalObstacleGrid, NavigatorSensesWhatOnlyVisionFoundGrownByTheMargin)
+{
+	const auto room = lvf::test::worldFromText(lvf::test::roomWorld(""));
+	const auto world = lvf::test::worldFromText(lvf::test::roomWorld(
+		"  - {name: floating, pose: [2.3, 0, 0], size: [0.6, 0.7, 0.3], elevation: 0.6}\n"));
+	const mrpt::poses::CPose2D origin(0, 0, 0);
+	const auto laser = scanFrom(room, {0, 0});
+	const auto vision = scanFrom(world, {0, 0}, mrpt::DEG2RAD(70.0), 141);
+	// Nearest sensed x ahead on the robot's axis (|y| < 0.2 m), short of and beyond x = 4 m.
+	auto nearestAhead = [&](double margin) {
+		nav::LocalObstacleGrid grid(-1.5, 5.5, -3.5, 3.5, 0.05, 0.45, margin);
+		for (int k = 0; k < 3; k++) grid.insertLaser(laser, origin), grid.insertVision(vision, origin);
+		mrpt::maps::CSimplePointsMap sensed;
+		grid.obstaclesNear(origin, 6.0, sensed);
+		std::pair<double, double> nearest{1e9, 1e9};
+		for (size_t i = 0; i < sensed.size(); i++)
+		{
+			float x, y;
+			sensed.getPoint(i, x, y);
+			if (std::abs(y) >= 0.2f || x < 0) continue;
+			double& slot = x < 4 ? nearest.first : nearest.second;
+			slot = std::min(slot, double(x));
+		}
+		return nearest;
+	};
+	const auto [face, wall] = nearestAhead(0.0);
+	const auto [grownFace, sameWall] = nearestAhead(0.1);
+	std::cout << "box face sensed at " << face << " m, " << grownFace << " m with a 0.1 m margin; wall at " << wall
+			  << " m, " << sameWall << " m\n";
+	EXPECT_NEAR(face, 2.0, 0.05);  // a cell
+	EXPECT_NEAR(grownFace, face - 0.1, 0.03);
+	EXPECT_NEAR(wall, 5.0, 0.05);
+	EXPECT_DOUBLE_EQ(sameWall, wall);
 }
 
 namespace

@@ -7,8 +7,9 @@
 namespace lvf::navigation
 {
 LocalObstacleGrid::LocalObstacleGrid(
-	double xMin, double xMax, double yMin, double yMax, double resolution, double occupiedBelow)
-	: m_occupiedBelow(float(occupiedBelow))
+	double xMin, double xMax, double yMin, double yMax, double resolution, double occupiedBelow,
+	double visionMargin)
+	: m_occupiedBelow(float(occupiedBelow)), m_visionMargin(visionMargin)
 {
 	for (auto* g : {&m_laser, &m_vision})
 		g->setSize(float(xMin), float(xMax), float(yMin), float(yMax), float(resolution), 0.5f);
@@ -56,17 +57,25 @@ mrpt::maps::COccupancyGridMap2D LocalObstacleGrid::obstacleMap() const
 	return out;
 }
 
+cv::Mat1b LocalObstacleGrid::nearVisionOnly(double distance, int x0, int y0, int x1, int y1) const
+{
+	// The window padded by the reach, so that cells just outside it count.
+	const int r = int(std::ceil(distance / m_laser.getResolution()));
+	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
+	cv::Mat1b visionOnly = cv::Mat1b::zeros(y1 - y0 + 1 + 2 * r, x1 - x0 + 1 + 2 * r);
+	for (int cy = std::max(0, y0 - r); cy <= std::min(H - 1, y1 + r); cy++)
+		for (int cx = std::max(0, x0 - r); cx <= std::min(W - 1, x1 + r); cx++)
+			if (m_vision.getCell(cx, cy) < m_occupiedBelow && m_laser.getCell(cx, cy) >= m_occupiedBelow)
+				visionOnly(cy - y0 + r, cx - x0 + r) = 255;
+	cv::Mat1b near;
+	cv::dilate(visionOnly, near, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
+	return near(cv::Rect(r, r, x1 - x0 + 1, y1 - y0 + 1));
+}
+
 void LocalObstacleGrid::assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& out) const
 {
 	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
-	cv::Mat1b visionOnly = cv::Mat1b::zeros(H, W);
-	for (int cy = 0; cy < H; cy++)
-		for (int cx = 0; cx < W; cx++)
-			if (m_vision.getCell(cx, cy) < m_occupiedBelow && m_laser.getCell(cx, cy) >= m_occupiedBelow)
-				visionOnly(cy, cx) = 255;
-	const int r = int(std::ceil(depth / m_laser.getResolution()));
-	cv::Mat1b near;
-	cv::dilate(visionOnly, near, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1)));
+	const cv::Mat1b near = nearVisionOnly(depth, 0, 0, W - 1, H - 1);
 	for (int cy = 0; cy < H; cy++)
 	{
 		// Log-odds 0: no observation ever reached the cell.
@@ -85,11 +94,15 @@ void LocalObstacleGrid::obstaclesNear(
 	const int x1 = std::min(int(g.getSizeX()) - 1, g.x2idx(robot.x() + range));
 	const int y0 = std::max(0, g.y2idx(robot.y() - range));
 	const int y1 = std::min(int(g.getSizeY()) - 1, g.y2idx(robot.y() + range));
+	if (x0 > x1 || y0 > y1) return;
+	// What only vision found is grown by the margin (see the constructor).
+	cv::Mat1b grown;
+	if (m_visionMargin > 0) grown = nearVisionOnly(m_visionMargin, x0, y0, x1, y1);
 	const double r2 = range * range;
 	for (int cy = y0; cy <= y1; cy++)
 		for (int cx = x0; cx <= x1; cx++)
 		{
-			if (!obstacle(cx, cy)) continue;
+			if (!obstacle(cx, cy) && (grown.empty() || !grown(cy - y0, cx - x0))) continue;
 			const double x = g.idx2x(cx), y = g.idx2y(cy);
 			const double dx = x - robot.x(), dy = y - robot.y();
 			if (dx * dx + dy * dy > r2) continue;

@@ -16,6 +16,7 @@ void NavigationLoopOptions::loadFromConfigFile(
 	gridResolution = ini.real("grid_resolution", gridResolution, 0.01, 1);
 	obstacleRange = ini.real("obstacle_range", obstacleRange, 0.1, 100);
 	occupiedBelow = ini.real("occupied_below", occupiedBelow, 0.01, 0.99);
+	visionObstacleMargin = ini.real("vision_obstacle_margin", visionObstacleMargin, 0, 2);
 	globalGuidance = ini.flag("global_guidance", globalGuidance);
 	guidancePeriod = ini.real("guidance_period", guidancePeriod, 1e-3, 1e6);
 	guidanceLookahead = ini.real("guidance_lookahead", guidanceLookahead, 0.1, 100);
@@ -38,6 +39,7 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "grid_resolution", gridResolution, "local occupancy grid cell size [m]");
 	writeOption(c, s, "obstacle_range", obstacleRange, "occupied cells this near the robot are obstacles for the navigator [m]");
 	writeOption(c, s, "occupied_below", occupiedBelow, "a cell is occupied when its free probability is below this [0-1]");
+	writeOption(c, s, "vision_obstacle_margin", visionObstacleMargin, "the navigator also senses the cells this near an obstacle only vision found (its edges are less sure than the laser's; a floating box's unseen sides go on past them); 0: off [m]");
 	writeOption(c, s, "global_guidance", globalGuidance, "plan by value iteration on the robot's grid and steer along the path (false: straight at the target)");
 	writeOption(c, s, "guidance_period", guidancePeriod, "replan this often, and whenever the subgoal is reached [s]");
 	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");

@@ -57,7 +57,7 @@ std::unique_ptr<LocalObstacleGrid> gridFor(const NavigationScenario& scenario, c
 		xMin = std::min(xMin, p.x - 1.0), xMax = std::max(xMax, p.x + 1.0);
 		yMin = std::min(yMin, p.y - 1.0), yMax = std::max(yMax, p.y + 1.0);
 	}
-	return std::make_unique<LocalObstacleGrid>(xMin, xMax, yMin, yMax, loop.gridResolution, loop.occupiedBelow);
+	return std::make_unique<LocalObstacleGrid>(xMin, xMax, yMin, yMax, loop.gridResolution, loop.occupiedBelow, loop.visionObstacleMargin);
 }
 
 }  // namespace

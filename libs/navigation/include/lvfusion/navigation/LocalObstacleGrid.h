@@ -14,6 +14,7 @@
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
+#include <opencv2/core.hpp>
 
 namespace lvf::navigation
 {
@@ -21,10 +22,15 @@ class LocalObstacleGrid
 {
    public:
 	/** Covers [xMin, xMax] x [yMin, yMax] (world frame) at `resolution`;
-	 * a cell is an obstacle when its free probability is below `occupiedBelow`. */
+	 * a cell is an obstacle when its free probability is below `occupiedBelow`.
+	 * `visionMargin` [m]: the navigator (obstaclesNear) also senses the cells
+	 * this near an obstacle only vision found. Vision places an obstacle's
+	 * edge to a bin of the fused scan and a few centimetres of range, and
+	 * sees a floating box only from where it looked, so the laser's exact
+	 * edges need no margin and vision's do. */
 	LocalObstacleGrid(
 		double xMin, double xMax, double yMin, double yMax, double resolution,
-		double occupiedBelow);
+		double occupiedBelow, double visionMargin = 0);
 
 	void insertLaser(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robot);
 	/** `scan`'s bearings out of the cameras' view must be marked invalid:
@@ -56,9 +62,13 @@ class LocalObstacleGrid
 	 * differently (the cameras' view is narrower): both are grown to the
 	 * union, so that a cell index means the same place in both. */
 	void keepOneGeometry();
+	/** Of the cell window [x0, x1] x [y0, y1]: 255 where a cell only vision
+	 * found occupied lies within `distance` (rounded up to whole cells). */
+	cv::Mat1b nearVisionOnly(double distance, int x0, int y0, int x1, int y1) const;
 
 	mrpt::maps::COccupancyGridMap2D m_laser, m_vision;
 	float m_occupiedBelow;
+	double m_visionMargin;
 };
 
 }  // namespace lvf::navigation
