@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -117,6 +118,29 @@ TEST_F(NavigationLoop, BoxRoomFusedVfhReachesTheTarget)
 	EXPECT_EQ(m.collisions, 0) << m.detail;
 	EXPECT_GT(minClearanceOf(scenario, m), 0.0);
 	EXPECT_LE(m.finalDistance, cfg.loop.targetTolerance);
+}
+
+// With the plan keeping off what the cameras have not seen through the band
+// (guidance_unseen_radius, off by default), as measured, with both search
+// options: the run still reaches, and its 3D memory holds float_a, 0.6-1.0 m
+// over the floor, as not seen through.
+TEST_F(NavigationLoop, BoxRoomWithTheUnseenGuardReachesAndRemembersTheOverhang)
+{
+	const auto scenario = boxRoom();
+	auto cfg = setup(nav::Sensing::Fused, "CHolonomicVFH");
+	cfg.loop.timeout = 60;
+	cfg.loop.guidanceUnseenRadius = 1.5;
+	cfg.fusion.depth.shiftedWindows = true;
+	cfg.fusion.depth.subpixelIterations = 2;
+	const auto run = nav::runNavigation(scenario, cfg);
+	const auto& m = run.metrics;
+	EXPECT_EQ(m.outcome, Outcome::Reached) << m.detail;
+	EXPECT_EQ(m.collisions, 0) << m.detail;
+	EXPECT_GT(minClearanceOf(scenario, m), 0.0);
+	ASSERT_NE(run.grid->seenSpace(), nullptr);
+	const auto& floatA = *std::find_if(
+		scenario.world.boxes.begin(), scenario.world.boxes.end(), [](const auto& b) { return b.name == "float_a"; });
+	EXPECT_GE(run.grid->seenSpace()->unseenHeight(floatA.x, floatA.y), 0.3);
 }
 
 TEST_F(NavigationLoop, StartInCollisionIsReportedWithoutRunning)

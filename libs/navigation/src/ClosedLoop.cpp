@@ -1,4 +1,5 @@
 #include "ClosedLoop.h"
+#include "SeenRays.h"
 
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/metrics/ScanMetrics.h>
@@ -21,6 +22,10 @@ namespace
 {
 /** A turn in place ends when the subgoal is this near straight ahead [rad]. */
 constexpr double kTurnUntil = M_PI / 6;
+/** A path point within this of one already looked at is not looked at again [m]. */
+constexpr double kLookedAtRadius = 0.3;
+/** A look ends when the point is this near the heading (the cameras see 35 degrees to each side). */
+constexpr double kLookedWithin = 10 * M_PI / 180;
 
 /** The robot's cylinder as the polygon the PTGs check against: a 16-gon
  * around the circle (circumscribed, so the polygon never under-covers it). */
@@ -96,6 +101,14 @@ ClosedLoop::ClosedLoop(
 	m_guidance.clearance = m_loop.guidanceClearance;
 	m_guidance.overhangDepth = m_loop.guidanceOverhangDepth;
 	m_guidance.lookahead = m_loop.guidanceLookahead;
+	if (m_fused && m_loop.guidanceUnseenRadius > 0)
+	{
+		m_guidance.unseenRadius = m_loop.guidanceUnseenRadius;
+		m_guidance.unseenFrom = m_loop.guidanceUnseenFrom;
+		m_guidance.unseenMinHeight = m_loop.unseenMinHeight;
+		m_run.grid->trackSeenSpace(setup.fusion.band);
+		m_run.grid->seenSpace()->markFree(mrpt::math::TPoint2D(scenario.start), m_loop.startSeenRadius);
+	}
 	m_guidance.occupiedBelow = m_loop.occupiedBelow;
 	if (!m_guided) steerAt(scenario.target, true);
 }
@@ -145,6 +158,11 @@ void ClosedLoop::sense()
 	m_run.grid->insertLaser(*frame.scan, at);
 	if (m_fused && !r.fellBackToLaser)
 		m_run.grid->insertVision(*inCameraView(*r.fused, *frame.stereo, m_setup.fusion), at);
+	if (auto* seen = m_run.grid->seenSpace())
+	{
+		if (!r.fellBackToLaser) carveSeenRays(r, at, *seen);
+		seen->markFree(mrpt::math::TPoint2D(m_pose), m_scenario.world.robot.radius);
+	}
 	if (m_setup.onSensing) m_setup.onSensing(frame, r);
 }
 
@@ -157,7 +175,12 @@ bool ClosedLoop::followPlan()
 	if (g.status != Guidance::Status::Unreachable)
 	{
 		m_noPathSince = -1;
-		if (g.status == Guidance::Status::Path) steerAt(g.subgoal, g.subgoalIsTarget), m_run.plannedPath = g.path;
+		if (g.status == Guidance::Status::Path)
+		{
+			steerAt(g.subgoal, g.subgoalIsTarget), m_run.plannedPath = g.path;
+			// A path through columns the cameras have not seen through: look first.
+			if (!g.keepsOffAssumed && m_guidance.unseenRadius > 0) lookBeforeGoing(g.path);
+		}
 		else steerAt(m_scenario.target, true);
 		return true;
 	}
@@ -175,10 +198,41 @@ bool ClosedLoop::followPlan()
 	return true;
 }
 
+void ClosedLoop::lookBeforeGoing(const std::vector<mrpt::math::TPoint2D>& path)
+{
+	const mrpt::math::TPoint2D here(m_pose);
+	for (const auto& p : path)
+	{
+		const double d = std::hypot(p.x - here.x, p.y - here.y);
+		if (d > m_guidance.unseenRadius) return;
+		if (d < m_guidance.unseenFrom || !m_run.grid->unseen(p.x, p.y, m_guidance.unseenMinHeight)) continue;
+		// Once per place: what a look cannot show (too near, above the
+		// view) must not stop the robot for good.
+		for (const auto& q : m_lookedAt)
+			if (std::hypot(p.x - q.x, p.y - q.y) < kLookedAtRadius) return;
+		m_lookAt = p;
+		m_lookedAt.push_back(p);
+		return;
+	}
+}
+
 void ClosedLoop::drive()
 {
 	const double bearing =
 		mrpt::math::wrapToPi(std::atan2(m_subgoal.y - m_pose.y, m_subgoal.x - m_pose.x) - m_pose.phi);
+	if (m_lookAt && m_lookAroundLeft <= 0)
+	{
+		const double toLook =
+			mrpt::math::wrapToPi(std::atan2(m_lookAt->y - m_pose.y, m_lookAt->x - m_pose.x) - m_pose.phi);
+		if (std::abs(toLook) > kLookedWithin)
+		{
+			turnOnTheSpot(toLook);
+			m_turning = true;
+			return;
+		}
+		m_lookAt.reset();
+		m_nextPlanTime = m_metrics.time + m_loop.controlPeriod;  // plan on what the look saw
+	}
 	if (m_lookAroundLeft > 0)
 	{
 		turnOnTheSpot(+1);

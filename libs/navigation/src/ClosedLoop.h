@@ -10,6 +10,9 @@
 #include <lvfusion/navigation/WorldCollision.h>
 #include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
 
+#include <optional>
+#include <vector>
+
 namespace lvf::navigation
 {
 /** A pose with no NaN or infinity in it. */
@@ -42,6 +45,10 @@ class ClosedLoop
 	 * ends, `unreachable`) when no plan has been found for `unreachableAfter`. */
 	bool followPlan();
 
+	/** Sets m_lookAt to the first point of `path` within the unseen radius
+	 * whose band column the cameras have not seen free, unless one near it
+	 * was looked at already. */
+	void lookBeforeGoing(const std::vector<mrpt::math::TPoint2D>& path);
 	/** This step's command: the first look around, a turn on the spot, or
 	 * MRPT's navigator. A subgoal behind the robot (the path turned back):
 	 * MRPT's forward PTGs cannot turn in place and stall, or reverse blind;
@@ -90,6 +97,10 @@ class ClosedLoop
 	double m_nextPlanTime = 0;	//!< plan at the first step
 	double m_noPathSince = -1;	//!< <0: a path existed at the last plan
 	bool m_turning = false;	 //!< turning in place towards the subgoal
+	/** A point of the path the cameras have not seen through, to turn to
+	 * before going on (guidanceUnseenRadius); the points looked at so far. */
+	std::optional<mrpt::math::TPoint2D> m_lookAt;
+	std::vector<mrpt::math::TPoint2D> m_lookedAt;
 	double m_lookAroundLeft;  //!< [rad] of the first turn still to go
 	const double m_turnRate;  //!< [rad/s]
 };

@@ -103,6 +103,8 @@ Guidance planGuidance(
 	const auto seen = grid.obstacleMap();
 	std::optional<mrpt::maps::COccupancyGridMap2D> assumed;
 	if (o.overhangDepth > 0) grid.assumeOverhangDepth(o.overhangDepth, assumed.emplace(seen));
+	if (o.unseenRadius > 0)
+		grid.assumeUnseenNear(robot, o.unseenFrom, o.unseenRadius, o.unseenMinHeight, assumed ? *assumed : assumed.emplace(seen));
 	const auto* withOverhangs = assumed ? &*assumed : &seen;
 	// The full safety growth first, then half of it: the reactive methods
 	// slow and dither in gaps that only just fit the robot, so a wider way
@@ -113,7 +115,8 @@ Guidance planGuidance(
 		{withOverhangs, o.clearance}, {withOverhangs, 0.5 * o.clearance},
 		{&seen, o.clearance}, {&seen, 0.5 * o.clearance}, {&seen, 0.0}};
 	Attempt a;
-	for (size_t k = 0; k < std::size(attempts) && !a.plan.found(); k++)
+	size_t k = 0;
+	for (; k < std::size(attempts) && !a.plan.found(); k++)
 	{
 		const auto [map, clearance] = attempts[k];
 		// Without overhang depth or clearance some are the same plan again.
@@ -132,6 +135,7 @@ Guidance planGuidance(
 		return g;
 	}
 	g.status = Guidance::Status::Path;
+	g.keepsOffAssumed = attempts[k - 1].first == withOverhangs && assumed;
 	g.path = std::move(a.plan.path);
 	g.pathLength = lvf::planning::pathLength(g.path);
 	const size_t carrot = carrotIndex(g.path, *a.grid, o.lookahead);

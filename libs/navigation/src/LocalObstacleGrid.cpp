@@ -112,3 +112,33 @@ void LocalObstacleGrid::obstaclesNear(
 }
 
 }  // namespace lvf::navigation
+
+namespace lvf::navigation
+{
+void LocalObstacleGrid::trackSeenSpace(const lvf::HeightBand& band)
+{
+	m_seen = std::make_unique<SeenSpace>(
+		m_laser.getXMin(), m_laser.getXMax(), m_laser.getYMin(), m_laser.getYMax(), band, m_laser.getResolution());
+}
+
+bool LocalObstacleGrid::unseen(double x, double y, double minHeight) const
+{
+	return m_seen && m_seen->unseenHeight(x, y) >= minHeight - 1e-9;
+}
+
+void LocalObstacleGrid::assumeUnseenNear(
+	const mrpt::math::TPoint2D& robot, double from, double radius, double minHeight,
+	mrpt::maps::COccupancyGridMap2D& out) const
+{
+	if (!m_seen) return;
+	const int x0 = std::max(0, out.x2idx(robot.x - radius)), x1 = std::min(int(out.getSizeX()) - 1, out.x2idx(robot.x + radius));
+	const int y0 = std::max(0, out.y2idx(robot.y - radius)), y1 = std::min(int(out.getSizeY()) - 1, out.y2idx(robot.y + radius));
+	for (int cy = y0; cy <= y1; cy++)
+		for (int cx = x0; cx <= x1; cx++)
+		{
+			const double x = out.idx2x(cx), y = out.idx2y(cy), d = std::hypot(x - robot.x, y - robot.y);
+			if (d >= from && d <= radius && unseen(x, y, minHeight)) out.setCell(cx, cy, 0.0f);
+		}
+}
+
+}  // namespace lvf::navigation

@@ -43,6 +43,15 @@ struct GuidanceOptions
 	 * with the bare radius dithered until its timeout
 	 * (share/doc/lvfusion/measurements.md) [m]; 0: off. */
 	double overhangDepth = 0.6;
+	/** The cells between `unseenFrom` and this far from the robot whose
+	 * band column the cameras have not seen free (at least
+	 * `unseenMinHeight` of it: LocalObstacleGrid::assumeUnseenNear) are
+	 * avoided with the overhangs' assumed depth [m]; 0: off. Nearer cells
+	 * are left alone: the cameras, looking down from 1 m, never see the
+	 * whole band there, and the plan's growth would wall the robot in. */
+	double unseenRadius = 0;
+	double unseenFrom = 0.6;  //!< [m]
+	double unseenMinHeight = 0.15;	//!< [m]
 	double lookahead = 1.5;	 //!< the subgoal is at most this far along the path [m]
 	/** A blocked start (the robot brushing an obstacle cell) or goal is
 	 * moved to the nearest traversable cell within this distance [m]. */
@@ -63,6 +72,9 @@ struct Guidance
 	bool subgoalIsTarget = true;  //!< the path's remainder is shorter than the look-ahead
 	std::vector<mrpt::math::TPoint2D> path;	 //!< from the (snapped) robot position to the target
 	double pathLength = 0;	//!< [m]
+	/** The path keeps off the assumed cells (overhang depth, unseen
+	 * columns); false: they closed every way and were dropped. */
+	bool keepsOffAssumed = false;
 	std::string detail;	 //!< why, for Unreachable / Direct
 };
 

@@ -8,13 +8,18 @@
 // space must not erase what vision found; only vision looking again can. The
 // navigator is fed these cells rather than the last scan, so an overhang
 // stays an obstacle after it leaves the cameras' narrow view (the paper's
-// local map, Sec. 4).
+// local map, Sec. 4). Optionally (trackSeenSpace) a third memory, in 3D:
+// where the cameras have seen through the robot's height band (SeenSpace.h),
+// for the plan to keep off what they have not.
 
+#include <lvfusion/navigation/SeenSpace.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
+
+#include <memory>
 
 namespace lvf::navigation
 {
@@ -54,6 +59,20 @@ class LocalObstacleGrid
 	 * saw, for planners to keep off. */
 	void assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& map) const;
 
+	/** Also keeps where the cameras have seen through the band (SeenSpace,
+	 * voxels of the grid's resolution): off until this is called. */
+	void trackSeenSpace(const lvf::HeightBand& band);
+	/** Null unless trackSeenSpace() was called. */
+	SeenSpace* seenSpace() { return m_seen.get(); }
+	/** Whether at least `minHeight` of the band over (x, y) has not been
+	 * seen free (false without trackSeenSpace()). */
+	bool unseen(double x, double y, double minHeight) const;
+	/** Marks occupied in `map` (an obstacleMap() of this grid) the cells
+	 * `from` to `radius` away from `robot` that are unseen(minHeight). */
+	void assumeUnseenNear(
+		const mrpt::math::TPoint2D& robot, double from, double radius, double minHeight,
+		mrpt::maps::COccupancyGridMap2D& map) const;
+
 	/** Cell geometry (both grids share it). */
 	const mrpt::maps::COccupancyGridMap2D& geometry() const { return m_laser; }
 
@@ -67,6 +86,7 @@ class LocalObstacleGrid
 	cv::Mat1b nearVisionOnly(double distance, int x0, int y0, int x1, int y1) const;
 
 	mrpt::maps::COccupancyGridMap2D m_laser, m_vision;
+	std::unique_ptr<SeenSpace> m_seen;
 	float m_occupiedBelow;
 	double m_visionMargin;
 };

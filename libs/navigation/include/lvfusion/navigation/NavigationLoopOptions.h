@@ -38,6 +38,24 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	/** Cameras see an overhang's near faces only; the plan assumes it goes
 	 * on this far into what vision never looked at (GuidanceOptions) [m]. */
 	double guidanceOverhangDepth = 0.6;
+	/** The plan also keeps off the cells from guidanceUnseenFrom to this far
+	 * from the robot whose band column the cameras have not seen free
+	 * (SeenSpace.h; dropped with the overhang depth if that closes every
+	 * way, and then the robot first turns to look at the first such cell
+	 * on its path) [m]; 0: off, the default. Fused runs only. Measured
+	 * (overhang rooms 1-100, fused VFH, both search options, 1.5 m): the
+	 * rooms those collided in reached, but 2 others collided, round a box
+	 * no pixel matched on a plan that had given the unseen cells up
+	 * (share/doc/lvfusion/measurements.md). */
+	double guidanceUnseenRadius = 0;
+	double guidanceUnseenFrom = 0.6;  //!< [m]
+	/** A column is unseen when at least this much of its band has not
+	 * been seen free (less: gaps between the pixels' rays) [m]. */
+	double unseenMinHeight = 0.15;
+	/** With guidanceUnseenRadius: the disk round the start taken as seen
+	 * free, where the cameras (looking down from 1 m) cannot see the whole
+	 * band [m]. */
+	double startSeenRadius = 1.15;
 	/** The run ends as "unreachable" when no path exists on the grid for
 	 * this long (a few replans: one bad view does not end a run) [s]. */
 	double unreachableAfter = 3.0;
