@@ -28,7 +28,7 @@ metrics::FusionScore fuseWorld(uint32_t seed, fusion::CLaserStereoFusion::StageT
 	for (size_t k = 0; k < sim.frameCount(); k++)
 	{
 		const auto f = sim.simulateNextFrame(false);
-		const auto r = fusion.process(*f.scan, *f.stereo, "frame " + std::to_string(k));
+		const auto r = fusion.process(*f.scan, *f.stereo, "frame " + std::to_string(k), f.odometry);
 		EXPECT_FALSE(r.fellBackToLaser) << (r.warnings.empty() ? "" : r.warnings.front());
 		const auto inView = metrics::bearingsInView(
 			*f.scan, f.truthScan, *f.stereo, fusion.options().band, fusion.options().depth.zMax);
@@ -71,8 +71,11 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	// tolerance; most phantoms are the bearing beside an object (its
 	// silhouette matched half a window too wide). These bounds guard the
 	// present level against regressions; tighten them as it improves. With
-	// the exact model (test_visual_depth) the targets are met.
-	EXPECT_GE(total.recall(), 0.82);
+	// the exact model (test_visual_depth) the targets are met. The memory of
+	// the first frame's points (VisualPointMemory) took recall from 0.863 to
+	// 0.891 with the same phantoms: each room's second frame, 0.2 m on, has
+	// lost some of what the first saw out of its view.
+	EXPECT_GE(total.recall(), 0.87);
 	EXPECT_LE(total.phantomRate(), 0.04);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }
@@ -114,6 +117,46 @@ TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)
 	// of 148 until each match's core window had to match better than at the
 	// model's disparity.
 	EXPECT_LE(total.phantomRate(), 0.02);
+}
+
+namespace
+{
+/** The last frame's score of a run towards a box 0.2 m tall (under the
+ * laser's plane) whose front ends 0.8 m ahead of the robot there, with the
+ * visual point memory off or on. */
+metrics::FusionScore lastFrameNearALowBox(double maxTravel)
+{
+	auto yaml = lvf::test::roomWorld("  - {pose: [1.6, 0, 0], size: [0.4, 0.6, 0.2]}\n");
+	yaml.replace(yaml.find("[[0, 0, 0]]"), 11, "[[0, 0, 0], [0.3, 0, 0], [0.6, 0, 0]]");
+	simulation::CStereoLaserSimulator sim(lvf::test::worldFromText(yaml), simulation::CStereoLaserSimulator::TOptions());
+	fusion::CLaserStereoFusion::TOptions o;
+	o.memory.maxTravel = maxTravel;
+	fusion::CLaserStereoFusion fusion(o);
+	metrics::FusionScore last;
+	for (size_t k = 0; k < sim.frameCount(); k++)
+	{
+		const auto f = sim.simulateNextFrame(false);
+		const auto r = fusion.process(*f.scan, *f.stereo, "frame", f.odometry);
+		const auto inView = metrics::bearingsInView(*f.scan, f.truthScan, *f.stereo, o.band, o.depth.zMax);
+		last = metrics::scoreFusedScan(*f.scan, *r.fused, f.truthScan, inView, o.depth.zMax);
+		std::cout << "max_travel " << maxTravel << ", frame " << k << ": " << r.search.points.size()
+				  << " points found, " << r.remembered.size() << " remembered; recall " << last.recall()
+				  << " of " << last.hidden << " hidden bearings, " << last.phantoms << " phantoms\n";
+	}
+	return last;
+}
+}  // namespace
+
+// Close to a low obstacle only vision finds, its front leaves the bottom of
+// the image (the cameras 1 m up, 15 deg down, see the floor from 1.07 m);
+// the frames before saw it. The memory keeps it where the view cannot.
+TEST(FusionPipeline, RemembersTheFrontOfALowBoxAfterItLeftTheImage)
+{
+	const auto alone = lastFrameNearALowBox(0), remembered = lastFrameNearALowBox(1.5);
+	EXPECT_GT(alone.hidden, 5u);
+	EXPECT_LE(alone.recall(), 0.5);
+	EXPECT_GE(remembered.recall(), 0.9);
+	EXPECT_EQ(remembered.phantoms, 0u);
 }
 
 namespace

@@ -216,7 +216,7 @@ void BM_Fusion_BoxRoom(benchmark::State& state)
 	for (auto _ : state)
 	{
 		const auto& frame = f.frames[k++ % f.frames.size()];
-		benchmark::DoNotOptimize(fusion.process(*frame.scan, *frame.stereo, "frame").fused);
+		benchmark::DoNotOptimize(fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused);
 	}
 }
 
@@ -256,11 +256,14 @@ void printStageMedians(int passes)
 	shifted.depth.shiftedWindows = !shifted.depth.shiftedWindows;
 	auto subpixel = f.options;
 	subpixel.depth.subpixelIterations = subpixel.depth.subpixelIterations > 0 ? 0 : 2;
+	auto memory = f.options;
+	memory.memory.maxTravel = memory.memory.maxTravel > 0 ? 0 : 1.5;
 	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
 		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
 		{"fusion, full-res search", fullResolution},
 		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted},
-		{subpixel.depth.subpixelIterations > 0 ? "fusion, sub-pixel LK on" : "fusion, sub-pixel LK off", subpixel}};
+		{subpixel.depth.subpixelIterations > 0 ? "fusion, sub-pixel LK on" : "fusion, sub-pixel LK off", subpixel},
+		{memory.memory.maxTravel > 0 ? "fusion, point memory on" : "fusion, point memory off", memory}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
 	lvf::bench::StageMedians medians;
@@ -270,7 +273,7 @@ void printStageMedians(int passes)
 			const auto& frame = f.frames[k];
 			for (size_t i = 0; i < fusions.size(); i++)
 			{
-				const auto t = fusions[i].process(*frame.scan, *frame.stereo, "frame").times;
+				const auto t = fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times;
 				for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model},
 						 {"rectify", t.rectify}, {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
 					medians.add(variants[i].first, stage, ms);
@@ -298,7 +301,7 @@ void printAccuracy()
 		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) {
 			return lvf::metrics::scoreFusedScan(*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax);
 		};
-		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame").fused));
+		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused));
 		scores[kSgbmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
 		scores[kBmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::Block)));
 		scores["laser alone"].add(score(*frame.scan));

@@ -170,7 +170,8 @@ int run(int argc, char** argv)
 		CLaserStereoFusion::Result r;
 		try
 		{
-			r = fusion.process(*f.scan, *f.stereo, record);
+			r = fusion.process(*f.scan, *f.stereo, record,
+				in.hasOdometry ? std::optional<mrpt::poses::CPose2D>(f.odometry) : std::nullopt);
 		}
 		catch (const InputError& e)
 		{

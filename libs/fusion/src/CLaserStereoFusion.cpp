@@ -22,6 +22,7 @@ const char* kEvaluation = "ModelEvaluator";
 const char* kDepth = "FocusedEpipolarSearch";
 const char* kGrowth = "HorizontalSurfaceGrowth";
 const char* kFusion = "ScanFusion";
+const char* kMemory = "VisualPointMemory";
 
 /** Runs f() and adds its duration to `ms`. */
 template <typename F>
@@ -37,7 +38,7 @@ auto timed(double& ms, F&& f)
 void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
-	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kGrowth, kFusion});
+	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kGrowth, kFusion, kMemory});
 	lvf::common::IniSection ini(source, section);
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);
@@ -53,6 +54,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	depth.loadFromConfigFile(source, kDepth);
 	growth.loadFromConfigFile(source, kGrowth);
 	fusion.loadFromConfigFile(source, kFusion);
+	memory.loadFromConfigFile(source, kMemory);
 }
 
 void CLaserStereoFusion::TOptions::saveToConfigFile(
@@ -71,9 +73,10 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	depth.saveToConfigFile(c, kDepth);
 	growth.saveToConfigFile(c, kGrowth);
 	fusion.saveToConfigFile(c, kFusion);
+	memory.saveToConfigFile(c, kMemory);
 }
 
-CLaserStereoFusion::CLaserStereoFusion(const TOptions& options) : m_options(options) {}
+CLaserStereoFusion::CLaserStereoFusion(const TOptions& options) : m_options(options), m_memory(options.memory) {}
 
 CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
 	const mrpt::obs::CObservation2DRangeScan& scan, std::string why)
@@ -88,7 +91,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
 
 CLaserStereoFusion::Result CLaserStereoFusion::process(
 	const mrpt::obs::CObservation2DRangeScan& rawScan,
-	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record)
+	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record,
+	const std::optional<mrpt::poses::CPose2D>& odometry)
 {
 	if (rawScan.getScanSize() == 0)
 		throw lvf::common::InputError(record, "scan " + rawScan.sensorLabel, "has no rays");
@@ -177,8 +181,18 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		return found;
 	});
 	r.fused = timed(r.times.fuse, [&] {
+		auto points = r.search.points;
+		if (m_memory.enabled() && odometry)
+		{
+			const int half = m_options.evaluation.windowSize / 2;
+			r.remembered = m_memory.recall(*odometry, r.geometry,
+				{r.search.firstColumn, r.search.lastColumn, float(half), float(r.geometry.size.height - 1 - half),
+					m_options.depth.zMin, m_options.depth.zMax});
+			m_memory.remember(r.search.points);
+			points.insert(points.end(), r.remembered.begin(), r.remembered.end());
+		}
 		const ScanFusion fusion(m_options.fusion);
-		r.visualRanges = fusion.visualRanges(scan, r.search.points,
+		r.visualRanges = fusion.visualRanges(scan, points,
 			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)});
 		return ScanFusion::fuse(scan, r.visualRanges);
 	});

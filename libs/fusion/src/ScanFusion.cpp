@@ -37,8 +37,9 @@ std::vector<float> ScanFusion::visualRanges(
 		float offset;  //!< bearing minus the bin's own bearing, in bin steps
 		bool atImageEdge;  //!< from the outermost searched columns
 	};
+	// Remembered points (VisualPointMemory) have no pixel: u is NaN.
 	auto atImageEdge = [&](float u) {
-		return searched && (u - searched->first < searched->step || searched->last - u < searched->step);
+		return searched && std::isfinite(u) && (u - searched->first < searched->step || searched->last - u < searched->step);
 	};
 	const size_t n = laser.getScanSize();
 	std::vector<std::vector<Hit>> perBearing(n);

@@ -147,7 +147,8 @@ void ClosedLoop::sense()
 		try
 		{
 			r = m_fusion.process(
-				*frame.scan, *frame.stereo, mrpt::format("%s: t=%.1f s", m_scenario.world.name.c_str(), m.time));
+				*frame.scan, *frame.stereo, mrpt::format("%s: t=%.1f s", m_scenario.world.name.c_str(), m.time),
+				m_loop.fusionPointMemory ? std::optional<mrpt::poses::CPose2D>(m_pose) : std::nullopt);
 		}
 		catch (const lvf::common::InputError& e)
 		{

@@ -17,6 +17,7 @@ void NavigationLoopOptions::loadFromConfigFile(
 	obstacleRange = ini.real("obstacle_range", obstacleRange, 0.1, 100);
 	occupiedBelow = ini.real("occupied_below", occupiedBelow, 0.01, 0.99);
 	visionObstacleMargin = ini.real("vision_obstacle_margin", visionObstacleMargin, 0, 2);
+	fusionPointMemory = ini.flag("fusion_point_memory", fusionPointMemory);
 	globalGuidance = ini.flag("global_guidance", globalGuidance);
 	guidancePeriod = ini.real("guidance_period", guidancePeriod, 1e-3, 1e6);
 	guidanceLookahead = ini.real("guidance_lookahead", guidanceLookahead, 0.1, 100);
@@ -44,6 +45,7 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "obstacle_range", obstacleRange, "occupied cells this near the robot are obstacles for the navigator [m]");
 	writeOption(c, s, "occupied_below", occupiedBelow, "a cell is occupied when its free probability is below this [0-1]");
 	writeOption(c, s, "vision_obstacle_margin", visionObstacleMargin, "the navigator also senses the cells this near an obstacle only vision found (its edges are less sure than the laser's; a floating box's unseen sides go on past them); 0: off [m]");
+	writeOption(c, s, "fusion_point_memory", fusionPointMemory, "fused runs: give the fusion the robot's pose so that its memory of earlier frames' points ([VisualPointMemory]) works (false: the local grid is the loop's memory)");
 	writeOption(c, s, "global_guidance", globalGuidance, "plan by value iteration on the robot's grid and steer along the path (false: straight at the target)");
 	writeOption(c, s, "guidance_period", guidancePeriod, "replan this often, and whenever the subgoal is reached [s]");
 	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");

@@ -8,6 +8,7 @@
 //   4. focused epipolar depth search      lvf::depth::FocusedEpipolarSearch
 //      horizontal surfaces followed on    lvf::depth::HorizontalSurfaceGrowth
 //   5. fused virtual scan                 lvf::fusion::ScanFusion
+//      with earlier frames' points           lvf::fusion::VisualPointMemory
 //
 // Configuration: an MRPT INI file with one section per stage (defaults and
 // meanings in share/lvfusion/config/fusion.ini, or lvf-fuse --dump-config).
@@ -17,9 +18,12 @@
 #include <lvfusion/depth/HorizontalSurfaceGrowth.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <lvfusion/fusion/ScanFusion.h>
+#include <lvfusion/fusion/VisualPointMemory.h>
 #include <lvfusion/lines/ScanLineExtractor.h>
 #include <lvfusion/model/PlanarSceneModel.h>
 #include <mrpt/rtti/CObject.h>
+
+#include <optional>
 
 namespace lvf::fusion
 {
@@ -63,6 +67,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		lvf::depth::FocusedEpipolarSearch::TOptions depth;
 		lvf::depth::HorizontalSurfaceGrowth::TOptions growth;
 		ScanFusion::TOptions fusion;
+		VisualPointMemory::TOptions memory;
 
 		/** Reads every section; unknown sections and keys are errors. */
 		void loadFromConfigFile(
@@ -87,6 +92,9 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		lvf::evaluation::ModelEvaluation evaluation;
 		lvf::depth::FocusedEpipolarSearch::Result search;  //!< its points include the grown ones
 		size_t grownPoints = 0;	 //!< of them, added by HorizontalSurfaceGrowth
+		/** Earlier frames' points where this frame's search could not look
+		 * (VisualPointMemory), in this frame's robot frame; fused as well. */
+		std::vector<lvf::depth::VisualPoint> remembered;
 		std::vector<float> visualRanges;  //!< per laser bearing, inf: none
 		mrpt::obs::CObservation2DRangeScan::Ptr fused;	//!< label FUSED
 		bool fellBackToLaser = false;  //!< vision not used this frame (see warnings)
@@ -102,10 +110,15 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 	 * image, sizes that disagree with the calibration, bad focal length, a
 	 * scan without rays). Recoverable oddities (NaN/inf/negative ranges, no
 	 * valid range, a calibration the images contradict) become warnings, and
-	 * where vision cannot be trusted the frame falls back to the laser. */
+	 * where vision cannot be trusted the frame falls back to the laser.
+	 * @param odometry the robot's pose by odometry at the scan, for the
+	 * memory of earlier frames' points ([VisualPointMemory]); without it,
+	 * or with the memory off, each frame stands alone. Frames must come in
+	 * time order while the memory is on. */
 	Result process(
 		const mrpt::obs::CObservation2DRangeScan& scan,
-		const mrpt::obs::CObservationStereoImages& stereo, const std::string& record);
+		const mrpt::obs::CObservationStereoImages& stereo, const std::string& record,
+		const std::optional<mrpt::poses::CPose2D>& odometry = std::nullopt);
 
 	const TOptions& options() const { return m_options; }
 
@@ -115,6 +128,7 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
    private:
 	TOptions m_options;
 	lvf::evaluation::RectifiedStereo m_stereo;	// caches rectification maps
+	VisualPointMemory m_memory;
 };
 
 }  // namespace lvf::fusion

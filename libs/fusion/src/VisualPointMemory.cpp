@@ -1,0 +1,89 @@
+#include <lvfusion/common/IniSection.h>
+#include <lvfusion/fusion/VisualPointMemory.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+
+namespace lvf::fusion
+{
+using lvf::common::writeOption;
+
+void VisualPointMemory::TOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	lvf::common::IniSection ini(source, section);
+	maxTravel = ini.real("max_travel", maxTravel, 0, 1000);
+	ini.rejectUnknownKeys();
+}
+
+void VisualPointMemory::TOptions::saveToConfigFile(
+	mrpt::config::CConfigFileBase& c, const std::string& s) const
+{
+	writeOption(c, s, "max_travel", maxTravel, "keep visual points of earlier frames, moved by odometry, where the cameras cannot look now, until the robot has driven this far since they were seen; 0: off (needs odometry: lvf-fuse takes it from the rawlog) [m]");
+}
+
+namespace
+{
+/** The 2D pose as a 3D rigid transform (robot frame -> odometry frame). */
+Eigen::Isometry3d toOdometry(const mrpt::poses::CPose2D& pose)
+{
+	Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+	t.linear().topLeftCorner<2, 2>() << std::cos(pose.phi()), -std::sin(pose.phi()), std::sin(pose.phi()),
+		std::cos(pose.phi());
+	t.translation() << pose.x(), pose.y(), 0;
+	return t;
+}
+}  // namespace
+
+std::vector<lvf::depth::VisualPoint> VisualPointMemory::recall(
+	const mrpt::poses::CPose2D& odometry, const lvf::evaluation::RectifiedGeometry& geometry,
+	const SearchedView& view)
+{
+	// A pose that is no pose (a corrupt odometry record): nothing can be
+	// moved by it, so forget, and start again from the next good one.
+	if (!(std::isfinite(odometry.x()) && std::isfinite(odometry.y()) && std::isfinite(odometry.phi())))
+	{
+		clear();
+		return {};
+	}
+	if (m_hasPose) m_travel += (odometry - m_pose).norm();
+	m_pose = odometry, m_hasPose = true;
+	// Two transforms per frame, one product per point (MRPT's per-point
+	// composePoint took ~0.1 us each on a few thousand points a frame).
+	const Eigen::Isometry3d robotFromOdometry = toOdometry(odometry).inverse();
+	Eigen::Isometry3d cameraOnRobot = Eigen::Isometry3d::Identity();
+	cameraOnRobot.linear() = geometry.leftPose.getRotationMatrix().asEigen();
+	cameraOnRobot.translation() = geometry.cameraCentre();
+	const Eigen::Isometry3d cameraFromOdometry = cameraOnRobot.inverse() * robotFromOdometry;
+	// Whether the present search could have found the point: in front of
+	// the camera within the searched depths, inside the searched pixels.
+	auto inSearchedView = [&](const Eigen::Vector3d& c) {
+		if (!(c.z() >= view.zMin && c.z() <= view.zMax)) return false;
+		const double u = geometry.cx + geometry.f * c.x() / c.z(), v = geometry.cy + geometry.f * c.y() / c.z();
+		return u >= view.firstColumn && u <= view.lastColumn && v >= view.firstRow && v <= view.lastRow;
+	};
+	constexpr float kNoPixel = std::numeric_limits<float>::quiet_NaN();
+	std::vector<lvf::depth::VisualPoint> out;
+	size_t kept = 0;
+	for (const auto& p : m_points)
+	{
+		if (m_travel - p.seenAtTravel > m_options.maxTravel || inSearchedView(cameraFromOdometry * p.odom))
+			continue;
+		m_points[kept++] = p;
+		out.push_back({kNoPixel, kNoPixel, kNoPixel, kNoPixel, robotFromOdometry * p.odom});
+	}
+	m_points.resize(kept);
+	return out;
+}
+
+void VisualPointMemory::remember(const std::vector<lvf::depth::VisualPoint>& points)
+{
+	if (!m_hasPose) return;
+	const Eigen::Isometry3d odometryFromRobot = toOdometry(m_pose);
+	m_points.reserve(m_points.size() + points.size());
+	for (const auto& p : points) m_points.push_back({odometryFromRobot * p.robot, m_travel});
+}
+
+}  // namespace lvf::fusion
