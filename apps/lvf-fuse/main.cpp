@@ -205,7 +205,10 @@ int run(int argc, char** argv)
 			"  fusion %.2f ms per frame (single thread)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
 			in.unpairedScans, badFrames, fallbacks, timer.Tac(), timeSum / double(in.frames.size()),
-			in.hasOdometry ? "" : "; no odometry: grids assume the robot stood still");
+			in.hasOdometry ? ""
+			: options.memory.maxTravel > 0
+				? "; no odometry: grids assume the robot stood still, and no frame remembers the points of earlier ones"
+				: "; no odometry: grids assume the robot stood still");
 		if (scored)
 			std::cout << mrpt::format(
 				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "
