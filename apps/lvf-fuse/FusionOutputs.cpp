@@ -48,7 +48,7 @@ FusionOutputs::FusionOutputs(
 {
 	m_csv.open(files.stage(name + "_frames.csv"));
 	m_csv << "frame,timestamp,segments,noise_std,texture_gate,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
-			 "visual_points,grown_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
+			 "visual_points,grown_points,remembered_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
 			 "hidden_range_error_m\n";
 	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
@@ -96,12 +96,12 @@ void FusionOutputs::add(
 		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
 	const auto& t = r.times;
 	m_csv << mrpt::format(
-		"%zu,%.6f,%zu,%.2f,%.2f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
+		"%zu,%.6f,%zu,%.2f,%.2f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
 		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(), r.evaluation.noiseStd, r.evaluation.textureGate,
 		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Unmodelled),
 		r.evaluation.count(PixelState::Untextured),
 		r.search.stats.searchedPixels, r.search.stats.disparitiesTested, r.search.points.size(),
-		r.grownPoints, shortened, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
+		r.grownPoints, r.remembered.size(), shortened, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
 		t.fuse, t.total());
 	if (truth)
 	{
