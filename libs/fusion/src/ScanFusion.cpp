@@ -44,17 +44,23 @@ std::vector<float> ScanFusion::visualRanges(
 	const size_t n = laser.getScanSize();
 	std::vector<std::vector<Hit>> perBearing(n);
 	const double step = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
+	// Into the laser's frame: R^T (p - t), its rows taken once (MRPT's
+	// per-point inverseComposePoint costs about as much as the rest here).
+	const Eigen::Matrix3d laserToRobot = laser.sensorPose.getRotationMatrix().asEigen();
+	const Eigen::Vector3d laserOrigin(laser.sensorPose.x(), laser.sensorPose.y(), laser.sensorPose.z());
+	const Eigen::RowVector3d xAxis = laserToRobot.col(0).transpose(), yAxis = laserToRobot.col(1).transpose();
 	for (const auto& p : points)
 	{
-		// Into the laser's frame, projected onto its (horizontal) plane.
-		const auto s = laser.sensorPose.inverseComposePoint({p.robot.x(), p.robot.y(), p.robot.z()});
-		double bearing = std::atan2(s.y, s.x);
+		// Projected onto the laser's (horizontal) plane.
+		const Eigen::Vector3d d = p.robot - laserOrigin;
+		const double x = xAxis * d, y = yAxis * d;
+		double bearing = std::atan2(y, x);
 		if (!laser.rightToLeft) bearing = -bearing;
 		const double index = (bearing + 0.5 * laser.aperture) / step;
 		const long i = std::lround(index);
 		if (i < 0 || i >= static_cast<long>(n)) continue;
 		perBearing[static_cast<size_t>(i)].push_back(
-			{static_cast<float>(std::hypot(s.x, s.y)), static_cast<float>(index - double(i)), atImageEdge(p.u)});
+			{static_cast<float>(std::hypot(x, y)), static_cast<float>(index - double(i)), atImageEdge(p.u)});
 	}
 	std::vector<float> out(n, std::numeric_limits<float>::infinity());
 	const size_t need = static_cast<size_t>(m_options.minPoints);
