@@ -181,18 +181,23 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		return found;
 	});
 	r.fused = timed(r.times.fuse, [&] {
-		auto points = r.search.points;
+		const std::vector<lvf::depth::VisualPoint>* points = &r.search.points;
+		std::vector<lvf::depth::VisualPoint> withRemembered;
 		if (m_memory.enabled() && odometry)
 		{
+			// The searched image: the columns the search's points can lie
+			// at, the rows where its window fits.
 			const int half = m_options.evaluation.windowSize / 2;
 			r.remembered = m_memory.recall(*odometry, r.geometry,
 				{r.search.firstColumn, r.search.lastColumn, float(half), float(r.geometry.size.height - 1 - half),
 					m_options.depth.zMin, m_options.depth.zMax});
 			m_memory.remember(r.search.points);
-			points.insert(points.end(), r.remembered.begin(), r.remembered.end());
+			withRemembered = r.search.points;
+			withRemembered.insert(withRemembered.end(), r.remembered.begin(), r.remembered.end());
+			points = &withRemembered;
 		}
 		const ScanFusion fusion(m_options.fusion);
-		r.visualRanges = fusion.visualRanges(scan, points,
+		r.visualRanges = fusion.visualRanges(scan, *points,
 			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)});
 		return ScanFusion::fuse(scan, r.visualRanges);
 	});
