@@ -9,11 +9,11 @@
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/RandomWorld.h>
 
+#include "CliTestSupport.h"
 #include "TestWorlds.h"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 
 using namespace lvf;
@@ -122,29 +122,53 @@ TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)
 
 namespace
 {
-/** The last frame's score of a run towards a box 0.2 m tall (under the
- * laser's plane) whose front ends 0.8 m ahead of the robot there, with the
- * visual point memory off or on. */
-metrics::FusionScore lastFrameNearALowBox(double maxTravel)
+/** One frame of a run: its score and how many visual points it found and
+ * remembered. */
+struct FrameOfRun
 {
-	auto yaml = lvf::test::roomWorld("  - {pose: [1.6, 0, 0], size: [0.4, 0.6, 0.2]}\n");
-	yaml.replace(yaml.find("[[0, 0, 0]]"), 11, "[[0, 0, 0], [0.3, 0, 0], [0.6, 0, 0]]");
-	simulation::CStereoLaserSimulator sim(lvf::test::worldFromText(yaml), simulation::CStereoLaserSimulator::TOptions());
+	metrics::FusionScore score;
+	size_t found = 0, remembered = 0;
+};
+
+/** Every frame of `world`'s path fused in order with odometry, the default
+ * noisy sensors, and the visual point memory set to `maxTravel`. */
+std::vector<FrameOfRun> fuseRun(const std::string& worldYaml, double maxTravel)
+{
+	simulation::CStereoLaserSimulator sim(lvf::test::worldFromText(worldYaml), simulation::CStereoLaserSimulator::TOptions());
 	fusion::CLaserStereoFusion::TOptions o;
 	o.memory.maxTravel = maxTravel;
 	fusion::CLaserStereoFusion fusion(o);
-	metrics::FusionScore last;
+	std::vector<FrameOfRun> frames;
 	for (size_t k = 0; k < sim.frameCount(); k++)
 	{
 		const auto f = sim.simulateNextFrame(false);
 		const auto r = fusion.process(*f.scan, *f.stereo, "frame", f.odometry);
 		const auto inView = metrics::bearingsInView(*f.scan, f.truthScan, *f.stereo, o.band, o.depth.zMax);
-		last = metrics::scoreFusedScan(*f.scan, *r.fused, f.truthScan, inView, o.depth.zMax);
-		std::cout << "max_travel " << maxTravel << ", frame " << k << ": " << r.search.points.size()
-				  << " points found, " << r.remembered.size() << " remembered; recall " << last.recall()
-				  << " of " << last.hidden << " hidden bearings, " << last.phantoms << " phantoms\n";
+		frames.push_back({metrics::scoreFusedScan(*f.scan, *r.fused, f.truthScan, inView, o.depth.zMax),
+			r.search.points.size(), r.remembered.size()});
 	}
-	return last;
+	return frames;
+}
+
+/** The world's text with its path's waypoints (or poses) replaced. */
+std::string withPath(std::string yaml, const std::string& path, const std::string& replacement)
+{
+	yaml.replace(yaml.find(path), path.size(), replacement);
+	return yaml;
+}
+
+/** The last frame's score of a run towards a box 0.2 m tall (under the
+ * laser's plane) whose front ends 0.8 m ahead of the robot there. */
+metrics::FusionScore lastFrameNearALowBox(double maxTravel)
+{
+	const auto frames = fuseRun(withPath(lvf::test::roomWorld("  - {pose: [1.6, 0, 0], size: [0.4, 0.6, 0.2]}\n"),
+									"[[0, 0, 0]]", "[[0, 0, 0], [0.3, 0, 0], [0.6, 0, 0]]"),
+		maxTravel);
+	for (size_t k = 0; k < frames.size(); k++)
+		std::cout << "max_travel " << maxTravel << ", frame " << k << ": " << frames[k].found << " points found, "
+				  << frames[k].remembered << " remembered; recall " << frames[k].score.recall() << " of "
+				  << frames[k].score.hidden << " hidden bearings, " << frames[k].score.phantoms << " phantoms\n";
+	return frames.back().score;
 }
 }  // namespace
 
@@ -166,23 +190,13 @@ namespace
  * left turns and a slant, the default noisy sensors and odometry. */
 metrics::FusionScore boxRoomTour(double maxTravel)
 {
-	std::ifstream in(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
-	std::string yaml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-	const std::string straight = "[[3.0, 0.6], [3.0, 2.0]]";
-	yaml.replace(yaml.find(straight), straight.size(), "[[3.0, 0.6], [3.0, 1.7], [1.4, 1.7], [1.4, 3.5], [2.0, 5.2]]");
-	simulation::CStereoLaserSimulator sim(lvf::test::worldFromText(yaml), simulation::CStereoLaserSimulator::TOptions());
-	fusion::CLaserStereoFusion::TOptions o;
-	o.memory.maxTravel = maxTravel;
-	fusion::CLaserStereoFusion fusion(o);
+	const auto frames = fuseRun(withPath(lvf::test::slurp(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml"),
+									"[[3.0, 0.6], [3.0, 2.0]]",
+									"[[3.0, 0.6], [3.0, 1.7], [1.4, 1.7], [1.4, 3.5], [2.0, 5.2]]"),
+		maxTravel);
 	metrics::FusionScore total;
-	for (size_t k = 0; k < sim.frameCount(); k++)
-	{
-		const auto f = sim.simulateNextFrame(false);
-		const auto r = fusion.process(*f.scan, *f.stereo, "frame", f.odometry);
-		const auto inView = metrics::bearingsInView(*f.scan, f.truthScan, *f.stereo, o.band, o.depth.zMax);
-		total.add(metrics::scoreFusedScan(*f.scan, *r.fused, f.truthScan, inView, o.depth.zMax));
-	}
-	std::cout << "max_travel " << maxTravel << ", " << sim.frameCount() << " frames: recall " << total.recall()
+	for (const auto& f : frames) total.add(f.score);
+	std::cout << "max_travel " << maxTravel << ", " << frames.size() << " frames: recall " << total.recall()
 			  << " of " << total.hidden << " hidden bearings, " << total.phantoms << " phantoms of "
 			  << total.inView << " in view\n";
 	return total;

@@ -199,16 +199,17 @@ int run(int argc, char** argv)
 
 	if (!quiet)
 	{
+		std::string noOdometry;
+		if (!in.hasOdometry)
+			noOdometry = std::string("; no odometry: grids assume the robot stood still") +
+				(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
 		std::cout << mrpt::format(
 			"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
 			"%zu bad frames, %zu calibration fall-backs) in %.2f s\n"
 			"  fusion %.2f ms per frame (single thread)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
 			in.unpairedScans, badFrames, fallbacks, timer.Tac(), timeSum / double(in.frames.size()),
-			in.hasOdometry ? ""
-			: options.memory.maxTravel > 0
-				? "; no odometry: grids assume the robot stood still, and no frame remembers the points of earlier ones"
-				: "; no odometry: grids assume the robot stood still");
+			noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
 				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "

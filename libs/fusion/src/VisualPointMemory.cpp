@@ -26,13 +26,12 @@ void VisualPointMemory::TOptions::saveToConfigFile(
 
 namespace
 {
-/** The 2D pose as a 3D rigid transform (robot frame -> odometry frame). */
-Eigen::Isometry3d toOdometry(const mrpt::poses::CPose2D& pose)
+/** MRPT's pose as an Eigen rigid transform (its frame -> its parent's). */
+Eigen::Isometry3d rigid(const mrpt::poses::CPose3D& pose)
 {
 	Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-	t.linear().topLeftCorner<2, 2>() << std::cos(pose.phi()), -std::sin(pose.phi()), std::sin(pose.phi()),
-		std::cos(pose.phi());
-	t.translation() << pose.x(), pose.y(), 0;
+	t.linear() = pose.getRotationMatrix().asEigen();
+	t.translation() << pose.x(), pose.y(), pose.z();
 	return t;
 }
 }  // namespace
@@ -52,11 +51,8 @@ std::vector<lvf::depth::VisualPoint> VisualPointMemory::recall(
 	m_pose = odometry, m_hasPose = true;
 	// Two transforms per frame, one product per point (MRPT's per-point
 	// composePoint took ~0.1 us each on a few thousand points a frame).
-	const Eigen::Isometry3d robotFromOdometry = toOdometry(odometry).inverse();
-	Eigen::Isometry3d cameraOnRobot = Eigen::Isometry3d::Identity();
-	cameraOnRobot.linear() = geometry.leftPose.getRotationMatrix().asEigen();
-	cameraOnRobot.translation() = geometry.cameraCentre();
-	const Eigen::Isometry3d cameraFromOdometry = cameraOnRobot.inverse() * robotFromOdometry;
+	const Eigen::Isometry3d robotFromOdometry = rigid(mrpt::poses::CPose3D(odometry)).inverse();
+	const Eigen::Isometry3d cameraFromOdometry = rigid(geometry.leftPose).inverse() * robotFromOdometry;
 	// Whether the present search could have found the point: in front of
 	// the camera within the searched depths, inside the searched pixels.
 	auto inSearchedView = [&](const Eigen::Vector3d& c) {
@@ -81,7 +77,7 @@ std::vector<lvf::depth::VisualPoint> VisualPointMemory::recall(
 void VisualPointMemory::remember(const std::vector<lvf::depth::VisualPoint>& points)
 {
 	if (!m_hasPose) return;
-	const Eigen::Isometry3d odometryFromRobot = toOdometry(m_pose);
+	const Eigen::Isometry3d odometryFromRobot = rigid(mrpt::poses::CPose3D(m_pose));
 	m_points.reserve(m_points.size() + points.size());
 	for (const auto& p : points) m_points.push_back({odometryFromRobot * p.robot, m_travel});
 }
