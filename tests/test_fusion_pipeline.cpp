@@ -63,7 +63,7 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	RecordProperty("phantom_rate", std::to_string(total.phantomRate()));
 	EXPECT_GT(total.hidden, 100u);
 	// Issue #3 asks for recall >= 0.90 and phantom rate <= 0.02 here; the
-	// pipeline does not reach that yet (recall 0.838, phantom rate 0.033
+	// pipeline did not reach that at first (recall 0.838, phantom rate 0.033
 	// when this was written; seeds 11-16, not used for tuning: 0.909,
 	// 0.043). A third of the misses are bearings where no pixel of the
 	// image shows the obstacle (the bearing's plane is in view, the
@@ -75,8 +75,12 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	// the exact model (test_visual_depth) the targets are met. The memory of
 	// the first frame's points (VisualPointMemory) took recall from 0.863 to
 	// 0.891 with the same phantoms: each room's second frame, 0.2 m on, has
-	// lost some of what the first saw out of its view.
-	EXPECT_GE(total.recall(), 0.87);
+	// lost some of what the first saw out of its view. Closing narrow gaps
+	// along an obstacle's edge (NarrowGapBridging.h: a table top's front
+	// edge found on most bearings, not all) took it to 0.912 (259 of 284),
+	// phantoms unchanged: the issue's recall target, met here (lvf-fuse on
+	// these rooms' rawlogs, with the rawlog's noisy odometry: 0.901).
+	EXPECT_GE(total.recall(), 0.90);
 	EXPECT_LE(total.phantomRate(), 0.04);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }

@@ -467,9 +467,10 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
 	// Issue #3's targets on these scenes are recall >= 0.8 and phantom rate
 	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle 0),
-	// recall is not quite (0.739, 0.585). Motorcycle's misses: returns at
-	// the image's edge (no right view), and the nearest part of the front
-	// wheel, which does not match; Recycle's: the bins' bases, 5-10 cm
+	// recall is not quite (0.739, 0.717; Recycle 0.585 before narrow gaps
+	// in an edge were closed, NarrowGapBridging.h). Motorcycle's
+	// misses: returns at the image's edge (no right view), and the nearest
+	// part of the front wheel, which does not match; Recycle's: the bins' bases, 5-10 cm
 	// above the floor, within d_allow of the floor model (see the next
 	// test) or untextured, a lid's rim, the image's edges. (Recycle: 0.434
 	// with texture gates fixed at 4 and 5 grey levels, where relative to
@@ -478,7 +479,7 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 	// 5 cm of range noise on this 1 cm slice: one segment through the whole
 	// motorcycle, test_line_segments' ThresholdsFollowTheScansStatedNoise.)
 	// These bounds guard the present level; tighten them as it improves.
-	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.55, 0.02}}};
+	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.69, 0.02}}};
 	for (const auto& name : kFloorScenes)
 	{
 		SCOPED_TRACE(name);
@@ -504,7 +505,9 @@ TEST_F(MiddleburyImport, FloorDisparityMarginFindsTheBinsBases)
 	// the band but within d_allow (0.12 m of depth, ~7 px of disparity in
 	// these images) of the floor model, so criterion a hides them. With
 	// floor_disparity_margin = 2 (px) it spares them. Measured: recall
-	// 0.585 -> 0.698, phantom rate 0 -> 0.009 (one bearing of 112).
+	// 0.717 -> 0.868, phantom rate 0 -> 0.027 (3 bearings of 112: a base
+	// found 0.14 m too near, and the gaps either side of it closed onto it);
+	// before gaps were closed (NarrowGapBridging.h), 0.585 -> 0.698, 0 -> 0.009.
 	const std::string name = "Recycle";
 	const auto imported = import("--scene " + (kScenes / name).string() + " --out in -q");
 	ASSERT_EQ(imported.status, 0) << imported.err;
@@ -518,8 +521,8 @@ TEST_F(MiddleburyImport, FloorDisparityMarginFindsTheBinsBases)
 	std::cout << "[ lvf-fuse ] Recycle: recall " << before << " -> " << after << ", phantom rate "
 			  << phantomsBefore << " -> " << phantomsAfter << "\n";
 	EXPECT_GE(after, before + 0.08) << narrowed.out;
-	EXPECT_GE(after, 0.65) << narrowed.out;
-	EXPECT_LE(phantomsAfter, 0.02) << narrowed.out;
+	EXPECT_GE(after, 0.84) << narrowed.out;
+	EXPECT_LE(phantomsAfter, 0.035) << narrowed.out;
 }
 
 TEST_F(MiddleburyImport, CalibrationCheckKeepsItsOwnNccWhenTheModelCheckIsStricter)

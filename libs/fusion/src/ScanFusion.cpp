@@ -1,4 +1,5 @@
 #include <lvfusion/common/IniSection.h>
+#include <lvfusion/fusion/NarrowGapBridging.h>
 #include <lvfusion/fusion/ScanFusion.h>
 
 #include <algorithm>
@@ -9,6 +10,15 @@ namespace lvf::fusion
 {
 using lvf::common::writeOption;
 
+namespace
+{
+/** What the laser says of bearing i: no return means nothing up to its range. */
+float laserRangeOrMax(const mrpt::obs::CObservation2DRangeScan& laser, size_t i)
+{
+	return laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange;
+}
+}  // namespace
+
 void ScanFusion::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
@@ -16,6 +26,7 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	minPoints = ini.integer("min_points", minPoints, 1, 10000);
 	clusterTolerance = ini.real("cluster_tolerance", clusterTolerance, 0, 10);
 	centreSlack = ini.real("centre_slack", centreSlack, -0.5, 0.5);
+	bridgeWidth = ini.real("bridge_width", bridgeWidth, 0, 10);
 	ini.rejectUnknownKeys();
 }
 
@@ -25,6 +36,7 @@ void ScanFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_points", minPoints, "visual points a bearing needs before vision may shorten it");
 	writeOption(c, s, "cluster_tolerance", clusterTolerance, "those points must lie within this span of range [m]");
 	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin (negative: reach past it on both sides by that much)");
+	writeOption(c, s, "bridge_width", bridgeWidth, "close gaps in an edge at most this wide between two bearings whose ranges agree within cluster_tolerance, one of them set by vision: bearings between that are farther than both, and not placed by vision within cluster_tolerance of them, take the line between them; 0: off [m]");
 }
 
 std::vector<float> ScanFusion::visualRanges(
@@ -97,6 +109,12 @@ std::vector<float> ScanFusion::visualRanges(
 			break;
 		}
 	}
+	if (m_options.bridgeWidth > 0)
+	{
+		std::vector<float> laserRanges(n);
+		for (size_t i = 0; i < n; i++) laserRanges[i] = laserRangeOrMax(laser, i);
+		bridgeNarrowGaps(out, laserRanges, step, m_options.bridgeWidth, m_options.clusterTolerance);
+	}
 	return out;
 }
 
@@ -107,8 +125,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr ScanFusion::fuse(
 	fused->sensorLabel = "FUSED";
 	for (size_t i = 0; i < fused->getScanSize(); i++)
 	{
-		const float laserRange = laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange;
-		if (i < visual.size() && visual[i] < laserRange)
+		if (i < visual.size() && visual[i] < laserRangeOrMax(laser, i))
 		{
 			fused->setScanRange(i, visual[i]);
 			fused->setScanRangeValidity(i, true);
