@@ -35,8 +35,9 @@ TEST(NarrowGapBridging, ClosesAGapInAnEdgeOntoTheEdgeItself)
 	std::vector<float> visual = edge;
 	visual[3] = visual[4] = kNone;
 	const std::vector<float> laser(7, 6.f);
-	bridgeNarrowGaps(visual, laser, kStep, kWidth, kTolerance);
+	const std::vector<bool> bridged = bridgeNarrowGaps(visual, laser, kStep, kWidth, kTolerance);
 	for (size_t i = 0; i < edge.size(); i++) EXPECT_NEAR(visual[i], edge[i], 1e-4) << "bearing " << i;
+	EXPECT_EQ(bridged, (std::vector<bool>{false, false, false, true, true, false, false}));
 }
 
 TEST(NarrowGapBridging, ABearingThatVisionPlacedFartherBackTakesTheEdge)
@@ -99,6 +100,6 @@ TEST(NarrowGapBridging, KeepsWhatVisionPlacedOnTheSurfaceAlready)
 	// within the tolerance: the same surface, not a gap; a wrong near range
 	// at one end must not pull it in.
 	std::vector<float> visual{2.00f, 2.05f, 1.90f};
-	bridgeNarrowGaps(visual, std::vector<float>(3, 6.f), kStep, kWidth, kTolerance);
+	EXPECT_EQ(bridgeNarrowGaps(visual, std::vector<float>(3, 6.f), kStep, kWidth, kTolerance), std::vector<bool>(3, false));
 	EXPECT_FLOAT_EQ(visual[1], 2.05f);
 }

@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lvf::apps
@@ -48,11 +49,11 @@ FusionOutputs::FusionOutputs(
 {
 	m_csv.open(files.stage(name + "_frames.csv"));
 	m_csv << "frame,timestamp,segments,noise_std,texture_gate,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
-			 "visual_points,grown_points,remembered_points,shortened_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
+			 "visual_points,grown_points,remembered_points,shortened_bearings,bridged_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
 			 "hidden_range_error_m\n";
 	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
-	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden\n";
+	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged\n";
 }
 
 namespace
@@ -76,9 +77,10 @@ void FusionOutputs::addBearings(
 					  << rangeField(r.fused->getScanRange(i), r.fused->getScanRangeValidity(i)) << ',';
 		if (truth)
 			m_bearingsCsv << rangeField(truth->ranges[i]) << ',' << int(truth->inView[i]) << ','
-						  << int(truth->hidden[i]) << '\n';
+						  << int(truth->hidden[i]);
 		else
-			m_bearingsCsv << ",,\n";
+			m_bearingsCsv << ",,";
+		m_bearingsCsv << ',' << int(i < r.bridged.size() && r.bridged[i]) << '\n';
 	}
 }
 
@@ -94,14 +96,15 @@ void FusionOutputs::add(
 	size_t shortened = 0;
 	for (size_t i = 0; i < r.visualRanges.size(); i++)
 		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
+	const auto bridged = static_cast<size_t>(std::count(r.bridged.begin(), r.bridged.end(), true));
 	const auto& t = r.times;
 	m_csv << mrpt::format(
-		"%zu,%.6f,%zu,%.2f,%.2f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
+		"%zu,%.6f,%zu,%.2f,%.2f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f", frame,
 		mrpt::Clock::toDouble(laser.timestamp), r.segments.size(), r.evaluation.noiseStd, r.evaluation.textureGate,
 		r.evaluation.count(PixelState::Inconsistent), r.evaluation.count(PixelState::Unmodelled),
 		r.evaluation.count(PixelState::Untextured),
 		r.search.stats.searchedPixels, r.search.stats.disparitiesTested, r.search.points.size(),
-		r.grownPoints, r.remembered.size(), shortened, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
+		r.grownPoints, r.remembered.size(), shortened, bridged, r.fellBackToLaser ? 1 : 0, t.lines, t.model, t.rectify, t.evaluate, t.search,
 		t.fuse, t.total());
 	if (truth)
 	{

@@ -85,6 +85,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
 	r.fellBackToLaser = true;
 	if (!why.empty()) r.warnings.push_back(std::move(why));
 	r.visualRanges.assign(scan.getScanSize(), std::numeric_limits<float>::infinity());
+	r.bridged.assign(scan.getScanSize(), false);
 	r.fused = ScanFusion::fuse(scan, r.visualRanges);
 	return r;
 }
@@ -198,7 +199,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		}
 		const ScanFusion fusion(m_options.fusion);
 		r.visualRanges = fusion.visualRanges(scan, *points,
-			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)});
+			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)},
+			&r.bridged);
 		return ScanFusion::fuse(scan, r.visualRanges);
 	});
 	return r;

@@ -18,7 +18,7 @@ double rangeToChord(double ra, double rb, double tb, double t)
 }
 }  // namespace
 
-void bridgeNarrowGaps(
+std::vector<bool> bridgeNarrowGaps(
 	std::vector<float>& visual, const std::vector<float>& laser, double bearingStep, double width,
 	double tolerance)
 {
@@ -28,6 +28,7 @@ void bridgeNarrowGaps(
 	std::vector<float> fused(n);
 	for (size_t i = 0; i < n; i++) fused[i] = std::min(found[i], laser[i]);
 	auto byVision = [&](size_t i) { return found[i] <= laser[i]; };
+	std::vector<bool> bridged(visual.size(), false);
 	for (size_t a = 0; a + 2 < n; a++)
 	{
 		// Over the bearings between a and b: the nearest fused range, and the
@@ -46,12 +47,13 @@ void bridgeNarrowGaps(
 			const double tb = double(b - a) * bearingStep;
 			for (size_t k = a + 1; k < b; k++)
 			{
-				const double r = rangeToChord(fused[a], fused[b], tb, double(k - a) * bearingStep);
-				visual[k] = std::min(visual[k], static_cast<float>(r));
+				const auto r = static_cast<float>(rangeToChord(fused[a], fused[b], tb, double(k - a) * bearingStep));
+				if (r < visual[k]) visual[k] = r, bridged[k] = true;
 			}
 			break;
 		}
 	}
+	return bridged;
 }
 
 }  // namespace lvf::fusion

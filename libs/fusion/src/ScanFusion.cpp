@@ -41,7 +41,8 @@ void ScanFusion::TOptions::saveToConfigFile(
 
 std::vector<float> ScanFusion::visualRanges(
 	const mrpt::obs::CObservation2DRangeScan& laser,
-	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched) const
+	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched,
+	std::vector<bool>* bridged) const
 {
 	struct Hit
 	{
@@ -113,8 +114,11 @@ std::vector<float> ScanFusion::visualRanges(
 	{
 		std::vector<float> laserRanges(n);
 		for (size_t i = 0; i < n; i++) laserRanges[i] = laserRangeOrMax(laser, i);
-		bridgeNarrowGaps(out, laserRanges, step, m_options.bridgeWidth, m_options.clusterTolerance);
+		const auto closed = bridgeNarrowGaps(out, laserRanges, step, m_options.bridgeWidth, m_options.clusterTolerance);
+		if (bridged) *bridged = closed;
 	}
+	else if (bridged)
+		bridged->assign(n, false);
 	return out;
 }
 

@@ -96,6 +96,9 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		 * (VisualPointMemory), in this frame's robot frame; fused as well. */
 		std::vector<lvf::depth::VisualPoint> remembered;
 		std::vector<float> visualRanges;  //!< per laser bearing, inf: none
+		/** Per laser bearing: its visual range closes a narrow gap between
+		 * two found ones (ScanFusion's bridge_width), it was not measured. */
+		std::vector<bool> bridged;
 		mrpt::obs::CObservation2DRangeScan::Ptr fused;	//!< label FUSED
 		bool fellBackToLaser = false;  //!< vision not used this frame (see warnings)
 		std::vector<std::string> warnings;	//!< one line each, naming the record

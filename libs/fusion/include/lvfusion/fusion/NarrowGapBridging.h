@@ -25,8 +25,9 @@ namespace lvf::fusion
  * @param laser per bearing, the laser's range (its max range where invalid)
  * @param bearingStep angle between consecutive bearings [rad]
  * @param width widest gap closed, as arc length between its ends [m]
- * @param tolerance the ends' ranges must agree within this [m] */
-void bridgeNarrowGaps(
+ * @param tolerance the ends' ranges must agree within this [m]
+ * @return per bearing, whether a bridge shortened its visual range */
+std::vector<bool> bridgeNarrowGaps(
 	std::vector<float>& visual, const std::vector<float>& laser, double bearingStep, double width,
 	double tolerance);
 

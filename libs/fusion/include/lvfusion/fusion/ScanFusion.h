@@ -68,11 +68,13 @@ class ScanFusion
 	/** Per laser bearing, the robust visual range (+inf where vision found
 	 * nothing trustworthy). With `searched`, a cluster that reaches the edge
 	 * of the searched columns need not straddle its bin's bearing: the ray
-	 * may leave the searched image there, and nothing beyond it is known. */
+	 * may leave the searched image there, and nothing beyond it is known.
+	 * With `bridged`, which bearings' ranges come from a closed gap
+	 * (bridge_width) rather than from points on them. */
 	std::vector<float> visualRanges(
 		const mrpt::obs::CObservation2DRangeScan& laser,
 		const std::vector<lvf::depth::VisualPoint>& points,
-		std::optional<SearchedColumns> searched = std::nullopt) const;
+		std::optional<SearchedColumns> searched = std::nullopt, std::vector<bool>* bridged = nullptr) const;
 
 	/** The laser scan with each bearing shortened to the visual range where
 	 * that is nearer; label FUSED. */
