@@ -466,20 +466,21 @@ TEST_F(MiddleburyImport, LvfFuseFindsHiddenObstaclesInTheRealScenes)
 {
 	if (!fs::exists(LVF_FUSE_BIN)) GTEST_SKIP() << LVF_FUSE_BIN << " is not built";
 	// Issue #3's targets on these scenes are recall >= 0.8 and phantom rate
-	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle 0),
-	// recall is not quite (0.739, 0.717; Recycle 0.585 before narrow gaps
-	// in an edge were closed, NarrowGapBridging.h). Motorcycle's
+	// <= 0.05. The phantom rate is met (measured: Motorcycle 0, Recycle
+	// 0.027), recall is met on Recycle (0.868; 0.717 without floor_disparity_margin,
+	// 0.585 before narrow gaps in an edge were closed, NarrowGapBridging.h),
+	// not quite on Motorcycle (0.739). Motorcycle's
 	// misses: returns at the image's edge (no right view), and the nearest
-	// part of the front wheel, which does not match; Recycle's: the bins' bases, 5-10 cm
-	// above the floor, within d_allow of the floor model (see the next
-	// test) or untextured, a lid's rim, the image's edges. (Recycle: 0.434
+	// part of the front wheel, which does not match; Recycle's: the bins'
+	// bases, 5-10 cm above the floor, untextured, a lid's rim, the image's
+	// edges. (Recycle: 0.434
 	// with texture gates fixed at 4 and 5 grey levels, where relative to
 	// the image's noise they are ~1 on these clean images, ImageNoise.h.
 	// Motorcycle: 0.217 while the line extractor used the thresholds for
 	// 5 cm of range noise on this 1 cm slice: one segment through the whole
 	// motorcycle, test_line_segments' ThresholdsFollowTheScansStatedNoise.)
 	// These bounds guard the present level; tighten them as it improves.
-	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.69, 0.02}}};
+	const std::map<std::string, std::pair<double, double>> floor{{"Motorcycle", {0.70, 0.03}}, {"Recycle", {0.84, 0.035}}};
 	for (const auto& name : kFloorScenes)
 	{
 		SCOPED_TRACE(name);
@@ -504,16 +505,16 @@ TEST_F(MiddleburyImport, FloorDisparityMarginFindsTheBinsBases)
 	// Recycle's bins stand on the floor; their bases, 5-10 cm up, are in
 	// the band but within d_allow (0.12 m of depth, ~7 px of disparity in
 	// these images) of the floor model, so criterion a hides them. With
-	// floor_disparity_margin = 2 (px) it spares them. Measured: recall
+	// floor_disparity_margin = 2 (px, the default) it spares them. Measured: recall
 	// 0.717 -> 0.868, phantom rate 0 -> 0.027 (3 bearings of 112: a base
 	// found 0.14 m too near, and the gaps either side of it closed onto it);
 	// before gaps were closed (NarrowGapBridging.h), 0.585 -> 0.698, 0 -> 0.009.
 	const std::string name = "Recycle";
 	const auto imported = import("--scene " + (kScenes / name).string() + " --out in -q");
 	ASSERT_EQ(imported.status, 0) << imported.err;
-	std::ofstream(m_dir / "floor.ini") << "[FocusedEpipolarSearch]\nfloor_disparity_margin = 2\n";
-	const auto paper = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir a");
-	const auto narrowed = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir b --config floor.ini");
+	std::ofstream(m_dir / "floor.ini") << "[FocusedEpipolarSearch]\nfloor_disparity_margin = 0\n";
+	const auto paper = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir a --config floor.ini");
+	const auto narrowed = run(LVF_FUSE_BIN, "--input in/" + name + ".rawlog --outdir b");
 	ASSERT_EQ(paper.status, 0) << paper.err;
 	ASSERT_EQ(narrowed.status, 0) << narrowed.err;
 	const auto [before, phantomsBefore] = recallAndPhantomRate(paper.out);

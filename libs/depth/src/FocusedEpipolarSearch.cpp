@@ -50,7 +50,7 @@ DisparitySet FocusedEpipolarSearch::allowedDisparities(
 		// on the match's peak, where the model check cannot see it; lifted
 		// altogether, criterion a let points 5-9 cm up through on the
 		// simulator's bare, smooth floor), and the band's lower edge below
-		// decides what is an obstacle. Off by default (floorDisparityMargin).
+		// decides what is an obstacle (floorDisparityMargin, 2 px by default).
 		double nearer = zModel > m_options.dAllow ? fB / (zModel - m_options.dAllow) : kInfinity;
 		if (floorModel && m_options.boundByBand && m_options.floorDisparityMargin > 0)
 			nearer = std::min(nearer, modelDisparity + m_options.floorDisparityMargin);
