@@ -1,5 +1,6 @@
 #include "FusionOutputs.h"
 
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -95,7 +96,7 @@ void FusionOutputs::add(
 
 	size_t shortened = 0;
 	for (size_t i = 0; i < r.visualRanges.size(); i++)
-		shortened += r.fused->getScanRange(i) < (laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange);
+		shortened += r.fused->getScanRange(i) < lvf::laserRangeOrMax(laser, i);
 	const auto bridged = static_cast<size_t>(std::count(r.bridged.begin(), r.bridged.end(), true));
 	const auto& t = r.times;
 	m_csv << mrpt::format(

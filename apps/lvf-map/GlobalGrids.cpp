@@ -1,5 +1,6 @@
 #include "GlobalGrids.h"
 
+#include <lvfusion/common/LaserRange.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/imgproc.hpp>
@@ -38,7 +39,7 @@ void GlobalGrids::add(
 		for (size_t i = 0; i < fused->getScanSize() && i < laser.getScanSize(); i++)
 		{
 			const float r = fused->getScanRange(i);
-			const float l = laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange;
+			const float l = lvf::laserRangeOrMax(laser, i);
 			if (!fused->getScanRangeValidity(i) || !(r < l - 0.5 * m_resolution)) continue;  // not vision's
 			const double a = fused->getScanAngle(i);
 			mrpt::math::TPoint3D end;

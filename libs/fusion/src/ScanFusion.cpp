@@ -1,4 +1,5 @@
 #include <lvfusion/common/IniSection.h>
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/fusion/NarrowGapBridging.h>
 #include <lvfusion/fusion/ScanFusion.h>
 
@@ -9,15 +10,6 @@
 namespace lvf::fusion
 {
 using lvf::common::writeOption;
-
-namespace
-{
-/** What the laser says of bearing i: no return means nothing up to its range. */
-float laserRangeOrMax(const mrpt::obs::CObservation2DRangeScan& laser, size_t i)
-{
-	return laser.getScanRangeValidity(i) ? laser.getScanRange(i) : laser.maxRange;
-}
-}  // namespace
 
 void ScanFusion::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)

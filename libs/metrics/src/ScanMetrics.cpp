@@ -1,3 +1,4 @@
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <mrpt/vision/pinhole.h>
 
@@ -44,11 +45,8 @@ std::vector<bool> hiddenBearings(
 	std::vector<bool> hidden(truth.size(), false);
 	for (size_t i = 0; i < truth.size(); i++)
 	{
-		const double laserRange = laser.getScanRangeValidity(i)
-			? laser.getScanRange(i)
-			: laser.maxRange;
 		hidden[i] = inView[i] && std::isfinite(truth[i]) &&
-			truth[i] < laserRange - margin;
+			truth[i] < laserRangeOrMax(laser, i) - margin;
 	}
 	return hidden;
 }
@@ -64,11 +62,6 @@ double median(std::vector<float> v)
 	if (v.empty()) return 0;
 	std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
 	return v[v.size() / 2];
-}
-
-double rangeOf(const mrpt::obs::CObservation2DRangeScan& s, size_t i)
-{
-	return s.getScanRangeValidity(i) ? s.getScanRange(i) : s.maxRange;
 }
 }  // namespace
 
@@ -96,7 +89,7 @@ FusionScore scoreFusedScan(
 	{
 		if (!inView[i]) continue;
 		const double t = truth[i];
-		const double l = rangeOf(laser, i), f = rangeOf(fused, i);
+		const double l = laserRangeOrMax(laser, i), f = laserRangeOrMax(fused, i);
 		// Beyond Zmax vision is not asked to see; count the bearing only if
 		// the laser or the truth puts something within it.
 		if (std::min(t, l) > maxRange && f >= std::min<double>(l, maxRange)) continue;
