@@ -5,7 +5,8 @@
 // front of, the path keeps off its unseen far part, and round one the
 // cameras never matched, off the columns they never saw through; in closed loop the robot
 // goes round a U-shaped trap on the plan and reaches the target. What the
-// navigator senses: vision's obstacles grown by a margin, the laser's not.
+// navigator senses: vision's obstacles grown by a margin, the laser's not,
+// and, when asked, the overhang's far part the plan assumes.
 
 #include <lvfusion/navigation/GlobalGuidance.h>
 #include <lvfusion/navigation/NavigationRun.h>
@@ -261,6 +262,103 @@ TEST(LocalObstacleGrid, NavigatorSensesWhatOnlyVisionFoundGrownByTheMargin)
 	EXPECT_NEAR(grownFace, face - 0.1, 0.03);
 	EXPECT_NEAR(wall, 5.0, 0.05);
 	EXPECT_DOUBLE_EQ(sameWall, wall);
+}
+
+// What the plan assumes of an overhang seen from the front (it goes on
+// 0.6 m into what vision never looked at), the navigator senses too once
+// asked: a reactive method steering at a point of the path ahead cuts the
+// path's corners, and round a floating box's unseen side that corner is the
+// box. Never where the robot has stood (nothing is in the band there), nor
+// along a path the plan had to lay through them.
+TEST(LocalObstacleGrid, NavigatorSensesTheAssumedFarPartOfAnOverhangWhenAsked)
+{
+	const auto room = lvf::test::worldFromText(lvf::test::roomWorld(""));
+	const auto world = lvf::test::worldFromText(lvf::test::roomWorld(kFloatingBox));
+	const mrpt::poses::CPose2D origin(0, 0, 0);
+	nav::LocalObstacleGrid grid(-1.5, 5.5, -3.5, 3.5, 0.05, 0.45);
+	const auto laser = scanFrom(room, {0, 0});
+	const auto vision = scanFrom(world, {0, 0}, mrpt::DEG2RAD(70.0), 141);
+	for (int k = 0; k < 3; k++) grid.insertLaser(laser, origin), grid.insertVision(vision, origin);
+	// The farthest sensed x behind the face (short of the wall at 5 m) on
+	// the robot's axis, and whether anything is sensed within 0.15 m of `p`.
+	auto sensed = [&](const TPoint2D& p) {
+		mrpt::maps::CSimplePointsMap points;
+		grid.obstaclesNear(origin, 6.0, points);
+		double farthest = 0;
+		bool nearP = false;
+		for (size_t i = 0; i < points.size(); i++)
+		{
+			float x, y;
+			points.getPoint(i, x, y);
+			if (std::abs(y) < 0.1f && x < 4.5f) farthest = std::max(farthest, double(x));
+			nearP = nearP || std::hypot(x - p.x, y - p.y) < 0.15;
+		}
+		return std::make_pair(farthest, nearP);
+	};
+	const TPoint2D behindFace(2.45, 0.0);
+	const auto [faceOnly, faceOnlyNear] = sensed(behindFace);
+	grid.senseAssumedOverhangs(0.6);
+	const auto [assumed, assumedNear] = sensed(behindFace);
+	// A path the plan had to lay through them keeps its way open.
+	grid.senseAssumedOverhangs(0.6, {{behindFace, 0.2}});
+	const auto [pathed, pathedNear] = sensed(behindFace);
+	const bool besidePathSensed = sensed({behindFace.x, 0.3}).second;
+	grid.senseAssumedOverhangs(0.6);
+	grid.markTraversed(mrpt::poses::CPose2D(behindFace.x, behindFace.y, 0), 0.3);
+	const auto [traversed, traversedNear] = sensed(behindFace);
+	grid.senseAssumedOverhangs(0);
+	const auto [dropped, droppedNear] = sensed(behindFace);
+	std::cout << "sensed behind the face up to x = " << faceOnly << " m; assuming 0.6 m: " << assumed
+			  << " m; with a path through (2.45, 0): " << pathed << " m; after the robot stood there: " << traversed
+			  << " m; dropped: " << dropped << " m\n";
+	EXPECT_NEAR(faceOnly, 2.0, 0.05);  // the face, a cell
+	EXPECT_FALSE(faceOnlyNear);
+	EXPECT_NEAR(assumed, 2.0 + 0.6, 0.08);  // the box's far face is at 2.6 m
+	EXPECT_TRUE(assumedNear);
+	EXPECT_FALSE(pathedNear);
+	EXPECT_TRUE(besidePathSensed);	// 0.3 m off the path, still there
+	EXPECT_FALSE(traversedNear);
+	EXPECT_NEAR(dropped, faceOnly, 1e-6);
+	EXPECT_FALSE(droppedNear);
+}
+
+// A bearing where vision found nothing clears its cells in the 2D vision
+// grid up to the laser's range -- under a floating box too, where the
+// cameras saw some height of the band but not the box's side. In 3D
+// (SeenSpace) the box's columns were never seen through, so with
+// assumeOverhangsWhereUnseen its far part is assumed all the same.
+TEST(LocalObstacleGrid, AssumedFarPartOutlastsRaysUnderTheBoxWhereTheBandWasNotSeen)
+{
+	const auto room = lvf::test::worldFromText(lvf::test::roomWorld(""));
+	const auto world = lvf::test::worldFromText(lvf::test::roomWorld(kFloatingBox));
+	const mrpt::poses::CPose2D origin(0, 0, 0), beside(2.3, -1.5, 0);
+	auto farthestSensedBehindFace = [&](bool unseenToo) {
+		nav::LocalObstacleGrid grid(-1.5, 5.5, -3.5, 3.5, 0.05, 0.45);
+		grid.trackSeenSpace({0.05, 1.2});
+		grid.seenSpace()->markFree({0, 0}, 1.15);
+		if (unseenToo) grid.assumeOverhangsWhereUnseen(0.15);
+		for (int k = 0; k < 3; k++)
+			grid.insertLaser(scanFrom(room, {0, 0}), origin),
+				grid.insertVision(scanFrom(world, {0, 0}, mrpt::DEG2RAD(70.0), 141), origin);
+		// From beside the box, rays under it to the far wall (the laser's ranges).
+		grid.insertVision(scanFrom(room, {beside.x(), beside.y()}), beside);
+		grid.senseAssumedOverhangs(0.6);
+		mrpt::maps::CSimplePointsMap points;
+		grid.obstaclesNear(origin, 6.0, points);
+		double farthest = 0;
+		for (size_t i = 0; i < points.size(); i++)
+		{
+			float x, y;
+			points.getPoint(i, x, y);
+			if (std::abs(y) < 0.1f && x < 4.5f) farthest = std::max(farthest, double(x));
+		}
+		return farthest;
+	};
+	const double in2D = farthestSensedBehindFace(false), in3D = farthestSensedBehindFace(true);
+	std::cout << "sensed behind the face up to x = " << in2D << " m by the 2D grid, " << in3D
+			  << " m with the band's unseen columns\n";
+	EXPECT_NEAR(in2D, 2.0, 0.05);  // the face only: the rays cleared the rest
+	EXPECT_NEAR(in3D, 2.0 + 0.6, 0.08);
 }
 
 namespace

@@ -26,6 +26,11 @@ constexpr double kTurnUntil = M_PI / 6;
 constexpr double kLookedAtRadius = 0.3;
 /** A look ends when the point is this near the heading (the cameras see 35 degrees to each side). */
 constexpr double kLookedWithin = 10 * M_PI / 180;
+/** The navigator does not sense an overhang's assumed far part within the
+ * robot's radius + this of the robot, or of a path the plan had to lay
+ * through it [m]: VFH+ grows obstacles by the radius + its safety distance
+ * (0.1 m), and cells that near would block every direction. */
+constexpr double kAssumedFreeMargin = 0.1;
 
 /** The robot's cylinder as the polygon the PTGs check against: a 16-gon
  * around the circle (circumscribed, so the polygon never under-covers it). */
@@ -101,13 +106,17 @@ ClosedLoop::ClosedLoop(
 	m_guidance.clearance = m_loop.guidanceClearance;
 	m_guidance.overhangDepth = m_loop.guidanceOverhangDepth;
 	m_guidance.lookahead = m_loop.guidanceLookahead;
+	if (m_fused && (m_loop.guidanceUnseenRadius > 0 || m_loop.guidanceOverhangUnseen))
+	{
+		m_run.grid->trackSeenSpace(setup.fusion.band);
+		m_run.grid->seenSpace()->markFree(mrpt::math::TPoint2D(scenario.start), m_loop.startSeenRadius);
+	}
+	if (m_fused && m_loop.guidanceOverhangUnseen) m_run.grid->assumeOverhangsWhereUnseen(m_loop.unseenMinHeight);
 	if (m_fused && m_loop.guidanceUnseenRadius > 0)
 	{
 		m_guidance.unseenRadius = m_loop.guidanceUnseenRadius;
 		m_guidance.unseenFrom = m_loop.guidanceUnseenFrom;
 		m_guidance.unseenMinHeight = m_loop.unseenMinHeight;
-		m_run.grid->trackSeenSpace(setup.fusion.band);
-		m_run.grid->seenSpace()->markFree(mrpt::math::TPoint2D(scenario.start), m_loop.startSeenRadius);
 	}
 	m_guidance.occupiedBelow = m_loop.occupiedBelow;
 	if (!m_guided) steerAt(scenario.target, true);
@@ -159,6 +168,7 @@ void ClosedLoop::sense()
 	m_run.grid->insertLaser(*frame.scan, at);
 	if (m_fused && !r.fellBackToLaser)
 		m_run.grid->insertVision(*inCameraView(*r.fused, *frame.stereo, m_setup.fusion), at);
+	m_run.grid->markTraversed(at, m_scenario.world.robot.radius);
 	if (auto* seen = m_run.grid->seenSpace())
 	{
 		if (!r.fellBackToLaser) carveSeenRays(r, at, *seen);
@@ -173,6 +183,23 @@ bool ClosedLoop::followPlan()
 	m_nextPlanTime = m.time + m_loop.guidancePeriod;
 	const auto g = planGuidance(*m_run.grid, mrpt::math::TPoint2D(m_pose), m_scenario.target, m_guidance);
 	m.plans++;
+	if (m_loop.navigatorKeepsOffAssumed && g.status != Guidance::Status::Unreachable)
+	{
+		// Only round a path that keeps its full clearance off them: in a
+		// narrower way VFH+ (which grows every cell by the radius and its
+		// safety distance) would find no valley between them and the walls.
+		// Where the plan goes through them, its path stays open; and none
+		// round the robot itself (it may have come among them while the
+		// plan went through them): they would box it in.
+		// Nor round the target, as far as the robot must come to it: the
+		// plan may end short of it, on a cell it could reach.
+		const double clearance = m_guidance.robotRadius + kAssumedFreeMargin;
+		const bool wide = g.status == Guidance::Status::Path && g.clearance >= m_guidance.clearance;
+		std::vector<LocalObstacleGrid::Disk> open{{m_scenario.target, clearance + m_loop.targetTolerance}};
+		if (!g.keepsOffAssumed)
+			for (const auto& p : g.path) open.push_back({p, clearance});
+		m_run.grid->senseAssumedOverhangs(wide ? m_guidance.overhangDepth : 0, std::move(open), clearance);
+	}
 	if (g.status != Guidance::Status::Unreachable)
 	{
 		m_noPathSince = -1;

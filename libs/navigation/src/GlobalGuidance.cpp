@@ -136,6 +136,7 @@ Guidance planGuidance(
 	}
 	g.status = Guidance::Status::Path;
 	g.keepsOffAssumed = attempts[k - 1].first == withOverhangs && assumed;
+	g.clearance = attempts[k - 1].second;
 	g.path = std::move(a.plan.path);
 	g.pathLength = lvf::planning::pathLength(g.path);
 	const size_t carrot = carrotIndex(g.path, *a.grid, o.lookahead);

@@ -32,6 +32,16 @@ void LocalObstacleGrid::insertVision(
 	keepOneGeometry();
 }
 
+void LocalObstacleGrid::markTraversed(const mrpt::poses::CPose2D& robot, double radius)
+{
+	const auto& g = m_vision;
+	const int x0 = std::max(0, g.x2idx(robot.x() - radius)), x1 = std::min(int(g.getSizeX()) - 1, g.x2idx(robot.x() + radius));
+	const int y0 = std::max(0, g.y2idx(robot.y() - radius)), y1 = std::min(int(g.getSizeY()) - 1, g.y2idx(robot.y() + radius));
+	for (int cy = y0; cy <= y1; cy++)
+		for (int cx = x0; cx <= x1; cx++)
+			if (std::hypot(g.idx2x(cx) - robot.x(), g.idx2y(cy) - robot.y()) <= radius) m_vision.setCell(cx, cy, 1.0f);
+}
+
 void LocalObstacleGrid::keepOneGeometry()
 {
 	const auto same = [](float a, float b) { return std::abs(a - b) < 1e-4f; };
@@ -72,17 +82,39 @@ cv::Mat1b LocalObstacleGrid::nearVisionOnly(double distance, int x0, int y0, int
 	return near(cv::Rect(r, r, x1 - x0 + 1, y1 - y0 + 1));
 }
 
-void LocalObstacleGrid::assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& out) const
+cv::Mat1b LocalObstacleGrid::assumedOverhang(double depth, int x0, int y0, int x1, int y1) const
 {
-	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
-	const cv::Mat1b near = nearVisionOnly(depth, 0, 0, W - 1, H - 1);
-	for (int cy = 0; cy < H; cy++)
+	cv::Mat1b assumed = nearVisionOnly(depth, x0, y0, x1, y1);
+	for (int cy = y0; cy <= y1; cy++)
 	{
 		// Log-odds 0: no observation ever reached the cell.
 		const auto* vision = m_vision.getRow(cy);
-		for (int cx = 0; cx < W; cx++)
-			if (near(cy, cx) && vision[cx] == 0) out.setCell(cx, cy, 0.0f);
+		for (int cx = x0; cx <= x1; cx++)
+		{
+			uint8_t& cell = assumed(cy - y0, cx - x0);
+			if (!cell || vision[cx] == 0) continue;
+			const bool lookedThrough = m_overhangUnseenMinHeight <= 0 ||
+				!unseen(m_vision.idx2x(cx), m_vision.idx2y(cy), m_overhangUnseenMinHeight);
+			if (lookedThrough) cell = 0;
+		}
 	}
+	return assumed;
+}
+
+void LocalObstacleGrid::assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& out) const
+{
+	const int W = int(m_laser.getSizeX()), H = int(m_laser.getSizeY());
+	const cv::Mat1b assumed = assumedOverhang(depth, 0, 0, W - 1, H - 1);
+	for (int cy = 0; cy < H; cy++)
+		for (int cx = 0; cx < W; cx++)
+			if (assumed(cy, cx)) out.setCell(cx, cy, 0.0f);
+}
+
+void LocalObstacleGrid::senseAssumedOverhangs(double depth, std::vector<Disk> open, double robotClearance)
+{
+	m_sensedOverhangDepth = depth;
+	m_sensedOverhangOpen = std::move(open);
+	m_sensedOverhangRobotClearance = robotClearance;
 }
 
 void LocalObstacleGrid::obstaclesNear(
@@ -98,6 +130,21 @@ void LocalObstacleGrid::obstaclesNear(
 	// What only vision found is grown by the margin (see the constructor).
 	cv::Mat1b grown;
 	if (m_visionMargin > 0) grown = nearVisionOnly(m_visionMargin, x0, y0, x1, y1);
+	if (m_sensedOverhangDepth > 0)
+	{
+		cv::Mat1b assumed = assumedOverhang(m_sensedOverhangDepth, x0, y0, x1, y1);
+		// The open disks, in cell units for cv::circle.
+		const double cells = 1.0 / g.getResolution();
+		auto open = [&](const Disk& d) {
+			const cv::Point centre(
+				int(std::lround((d.centre.x - g.idx2x(x0)) * cells)), int(std::lround((d.centre.y - g.idx2y(y0)) * cells)));
+			cv::circle(assumed, centre, int(std::ceil(d.radius * cells)), cv::Scalar(0), cv::FILLED);
+		};
+		open({{robot.x(), robot.y()}, m_sensedOverhangRobotClearance});
+		for (const Disk& d : m_sensedOverhangOpen) open(d);
+		if (grown.empty()) grown = assumed;
+		else cv::bitwise_or(grown, assumed, grown);
+	}
 	const double r2 = range * range;
 	for (int cy = y0; cy <= y1; cy++)
 		for (int cx = x0; cx <= x1; cx++)

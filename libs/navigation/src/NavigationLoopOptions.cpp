@@ -23,6 +23,8 @@ void NavigationLoopOptions::loadFromConfigFile(
 	guidanceLookahead = ini.real("guidance_lookahead", guidanceLookahead, 0.1, 100);
 	guidanceClearance = ini.real("guidance_clearance", guidanceClearance, 0, 10);
 	guidanceOverhangDepth = ini.real("guidance_overhang_depth", guidanceOverhangDepth, 0, 10);
+	navigatorKeepsOffAssumed = ini.flag("navigator_keeps_off_assumed", navigatorKeepsOffAssumed);
+	guidanceOverhangUnseen = ini.flag("guidance_overhang_unseen", guidanceOverhangUnseen);
 	guidanceUnseenRadius = ini.real("guidance_unseen_radius", guidanceUnseenRadius, 0, 100);
 	guidanceUnseenFrom = ini.real("guidance_unseen_from", guidanceUnseenFrom, 0, 100);
 	unseenMinHeight = ini.real("unseen_min_height", unseenMinHeight, 0, 10);
@@ -51,10 +53,12 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");
 	writeOption(c, s, "guidance_clearance", guidanceClearance, "the path keeps this much more than the robot radius off obstacles (retried with half, then 0, if no path) [m]");
 	writeOption(c, s, "guidance_overhang_depth", guidanceOverhangDepth, "the plan keeps off cells vision never looked at within this distance of an obstacle only vision found: an overhang's unseen far part (dropped, before the clearance, if that closes every way; 0: off) [m]");
+	writeOption(c, s, "navigator_keeps_off_assumed", navigatorKeepsOffAssumed, "while the plan keeps off those assumed cells at its full clearance, the navigator senses them as obstacles too (it cuts the path's corners, and round a floating box's unseen side the corner is the box)");
+	writeOption(c, s, "guidance_overhang_unseen", guidanceOverhangUnseen, "fused runs: those assumed cells also include the ones vision's 2D grid calls free but whose band column the cameras have not seen through (a ray under a floating box clears its cells in 2D; unseen_min_height)");
 	writeOption(c, s, "guidance_unseen_radius", guidanceUnseenRadius, "fused runs: the plan also keeps off cells this near the robot whose band column the cameras have not seen free (dropped with the overhang depth if that closes every way; 0: off) [m]");
 	writeOption(c, s, "guidance_unseen_from", guidanceUnseenFrom, "with guidance_unseen_radius: cells nearer the robot than this are left alone (the cameras never see the whole band there) [m]");
 	writeOption(c, s, "unseen_min_height", unseenMinHeight, "a cell's column is unseen when at least this much of the band over it has not been seen free [m]");
-	writeOption(c, s, "start_seen_radius", startSeenRadius, "with guidance_unseen_radius: the disk round the start taken as seen free (the cameras cannot see the whole band that near) [m]");
+	writeOption(c, s, "start_seen_radius", startSeenRadius, "with guidance_unseen_radius or guidance_overhang_unseen: the disk round the start taken as seen free (the cameras cannot see the whole band that near) [m]");
 	writeOption(c, s, "unreachable_after", unreachableAfter, "no path on the grid for this long ends the run as unreachable [s]");
 	writeOption(c, s, "turn_in_place_above_deg", turnInPlaceAboveDeg, "with guidance: turn on the spot while the subgoal is more than this off the heading [deg]");
 	writeOption(c, s, "turn_rate_degps", turnRateDegps, "rate of that turn [deg/s]");

@@ -75,6 +75,9 @@ struct Guidance
 	/** The path keeps off the assumed cells (overhang depth, unseen
 	 * columns); false: they closed every way and were dropped. */
 	bool keepsOffAssumed = false;
+	/** The clearance the path keeps (GuidanceOptions::clearance, or less
+	 * where that closed every way) [m]. */
+	double clearance = 0;
 	std::string detail;	 //!< why, for Unreachable / Direct
 };
 

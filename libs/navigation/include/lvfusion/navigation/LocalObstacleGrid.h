@@ -20,6 +20,7 @@
 #include <opencv2/core.hpp>
 
 #include <memory>
+#include <vector>
 
 namespace lvf::navigation
 {
@@ -42,6 +43,12 @@ class LocalObstacleGrid
 	 * they are left alone, not taken as free space. */
 	void insertVision(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robot);
 
+	/** The robot stands at `robot`: nothing is in the band within `radius`
+	 * of it, so the vision grid's cells there are free, and never an
+	 * overhang's assumed far part (the cameras cannot see under the robot,
+	 * nor the ground its body has swept). */
+	void markTraversed(const mrpt::poses::CPose2D& robot, double radius);
+
 	bool obstacle(int cx, int cy) const;
 	/** Centres of obstacle cells within `range` of the robot, in the robot's
 	 * frame (what CRobot2NavInterface::senseObstacles returns). */
@@ -58,10 +65,27 @@ class LocalObstacleGrid
 	 * it an obstacle): an overhang's far part, behind the faces the cameras
 	 * saw, for planners to keep off. */
 	void assumeOverhangDepth(double depth, mrpt::maps::COccupancyGridMap2D& map) const;
+	/** A disk of the floor [m]. */
+	struct Disk
+	{
+		mrpt::math::TPoint2D centre;
+		double radius = 0;
+	};
+	/** From now on obstaclesNear() also returns the cells
+	 * assumeOverhangDepth(depth) would mark, so that the navigator keeps off
+	 * what the plan keeps off -- except those within `robotClearance` of the
+	 * robot (they would box it in) or inside one of `open` (a path that had
+	 * to go through them, the target); depth 0: none. */
+	void senseAssumedOverhangs(double depth, std::vector<Disk> open = {}, double robotClearance = 0);
 
 	/** Also keeps where the cameras have seen through the band (SeenSpace,
 	 * voxels of the grid's resolution): off until this is called. */
 	void trackSeenSpace(const lvf::HeightBand& band);
+	/** From now on (with trackSeenSpace()) an overhang's assumed far part
+	 * (assumeOverhangDepth) also takes the cells the vision grid calls free
+	 * whose column is unseen(minHeight): a ray under a floating box clears
+	 * its cells in 2D, not in 3D. */
+	void assumeOverhangsWhereUnseen(double minHeight) { m_overhangUnseenMinHeight = minHeight; }
 	/** Null unless trackSeenSpace() was called. */
 	SeenSpace* seenSpace() { return m_seen.get(); }
 	/** Whether at least `minHeight` of the band over (x, y) has not been
@@ -84,11 +108,17 @@ class LocalObstacleGrid
 	/** Of the cell window [x0, x1] x [y0, y1]: 255 where a cell only vision
 	 * found occupied lies within `distance` (rounded up to whole cells). */
 	cv::Mat1b nearVisionOnly(double distance, int x0, int y0, int x1, int y1) const;
+	/** Of the cell window: 255 where assumeOverhangDepth(depth) marks a cell. */
+	cv::Mat1b assumedOverhang(double depth, int x0, int y0, int x1, int y1) const;
 
 	mrpt::maps::COccupancyGridMap2D m_laser, m_vision;
 	std::unique_ptr<SeenSpace> m_seen;
 	float m_occupiedBelow;
 	double m_visionMargin;
+	double m_sensedOverhangDepth = 0;
+	std::vector<Disk> m_sensedOverhangOpen;
+	double m_sensedOverhangRobotClearance = 0;
+	double m_overhangUnseenMinHeight = 0;  //!< 0: the 2D vision grid alone says what was looked at
 };
 
 }  // namespace lvf::navigation

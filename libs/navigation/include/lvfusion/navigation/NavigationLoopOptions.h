@@ -46,6 +46,22 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	/** Cameras see an overhang's near faces only; the plan assumes it goes
 	 * on this far into what vision never looked at (GuidanceOptions) [m]. */
 	double guidanceOverhangDepth = 0.6;
+	/** While the plan keeps its full clearance off the overhangs' assumed
+	 * far parts, the navigator senses them too
+	 * (LocalObstacleGrid::senseAssumedOverhangs): a reactive method
+	 * steering at a point of the path ahead cuts the path's corners, and
+	 * round a floating box whose side the cameras never saw that corner is
+	 * the box. Not along a path the plan had to lay through them, nor
+	 * round the robot itself, nor where only a narrower way is left (VFH+
+	 * would find no valley). Measured with the shifted windows and the
+	 * sub-pixel steps (share/doc/lvfusion/measurements.md). */
+	bool navigatorKeepsOffAssumed = true;
+	/** Fused runs: the overhangs' assumed far parts also take the cells
+	 * vision's 2D grid calls free but whose band column the cameras have
+	 * not seen through (SeenSpace.h, unseenMinHeight): a bearing where
+	 * vision found nothing clears its cells up to the laser's range, under
+	 * a floating box's unmatched side as well. */
+	bool guidanceOverhangUnseen = true;
 	/** The plan also keeps off the cells from guidanceUnseenFrom to this far
 	 * from the robot whose band column the cameras have not seen free
 	 * (SeenSpace.h; dropped with the overhang depth if that closes every
@@ -60,7 +76,7 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	/** A column is unseen when at least this much of its band has not
 	 * been seen free (less: gaps between the pixels' rays) [m]. */
 	double unseenMinHeight = 0.15;
-	/** With guidanceUnseenRadius: the disk round the start taken as seen
+	/** With guidanceUnseenRadius or guidanceOverhangUnseen: the disk round the start taken as seen
 	 * free, where the cameras (looking down from 1 m) cannot see the whole
 	 * band [m]. */
 	double startSeenRadius = 1.15;
