@@ -77,11 +77,14 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	// 0.891 with the same phantoms: each room's second frame, 0.2 m on, has
 	// lost some of what the first saw out of its view. Closing narrow gaps
 	// along an obstacle's edge (NarrowGapBridging.h: a table top's front
-	// edge found on most bearings, not all) took it to 0.912 (259 of 284),
-	// phantoms unchanged: the recall target, met here (lvf-fuse on
-	// these rooms' rawlogs, with the rawlog's noisy odometry: 0.901).
+	// edge found on most bearings, not all) took it to 0.901 (256 of 284),
+	// phantoms unchanged. The shifted windows and the sub-pixel steps, on
+	// by default since 2026-12-03, keep matches off the background beside
+	// objects: recall 0.912 (259 of 284), phantom rate 0.033 -> 0.019 (11
+	// of 577): both of the targets, met here (lvf-fuse on these
+	// rooms' rawlogs, with the rawlog's noisy odometry: the same).
 	EXPECT_GE(total.recall(), 0.90);
-	EXPECT_LE(total.phantomRate(), 0.04);
+	EXPECT_LE(total.phantomRate(), 0.02);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
 }
 

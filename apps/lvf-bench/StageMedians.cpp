@@ -53,7 +53,7 @@ void StageMedians::print(std::ostream& out, const std::string& baseline) const
 	for (const auto& name : m_methodOrder)
 	{
 		const Method& m = m_methods.at(name);
-		out << "  " << std::setw(26) << std::left << name << std::right << std::fixed
+		out << "  " << std::setw(29) << std::left << name << std::right << std::fixed
 			<< std::setprecision(2);
 		for (const auto& stage : m.stageOrder) out << "  " << stage << " " << median(name, stage);
 		const double total = medianTotal(name);

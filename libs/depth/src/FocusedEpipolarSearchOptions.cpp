@@ -61,8 +61,8 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "verify_full_line", verifyFullLine, "a match must also beat the whole epipolar line (not only the searched stretch)");
 	writeOption(c, s, "core_window", coreWindow, "a match must also hold on this smaller centred window, better than at the model's disparity, so a window just beside an object does not take the object's depth; 0: off [px, odd]");
 	writeOption(c, s, "core_accept_ncc", coreAcceptNcc, "NCC the core window must reach at the match [-1..1]");
-	writeOption(c, s, "shifted_windows", shiftedWindows, "a match must not be explained better by the model on a window shifted sideways until the pixel lies on its edge (the background beside an object's silhouette): a quarter fewer phantom bearings, a few obstacle edges lost; off by default (README)");
-	writeOption(c, s, "subpixel_iterations", subpixelIterations, "Lucas-Kanade steps along the row after the parabola, on a window weighted round its centre, so the centre pixel's surface decides the sub-pixel disparity (2: fewer phantoms, more recall; off by default, README); 0: the parabola alone");
+	writeOption(c, s, "shifted_windows", shiftedWindows, "a match must not be explained better by the model on a window shifted sideways until the pixel lies on its edge (the background beside an object's silhouette): a third fewer phantom bearings, a few obstacle edges lost (README)");
+	writeOption(c, s, "subpixel_iterations", subpixelIterations, "Lucas-Kanade steps along the row after the parabola, on a window weighted round its centre, so the centre pixel's surface decides the sub-pixel disparity (2: fewer phantoms, more recall, README); 0: the parabola alone");
 	writeOption(c, s, "subpixel_sigma", subpixelSigma, "those weights' Gaussian standard deviation [px]");
 	writeOption(c, s, "coarse_to_fine", coarseToFine, "find and verify matches on the half-resolution pair, refine them on the full one (~8x fewer products)");
 	writeOption(c, s, "left_right_check", leftRightCheck, "the matched right window, searched back along the left row, must find the left pixel again");

@@ -137,11 +137,12 @@ class FocusedEpipolarSearch
 		 * 1-6 / 11-16 / 21-26 / 31-36 / held-out 41-46 / 51-56: 19 / 17 /
 		 * 12 / 25 / 12 / 28 -> 15 / 15 / 9 / 19 / 8 / 20, recall bearings
 		 * +1 / 0 / -1 / -2 / -3 / -3 (an obstacle's outermost bearing).
-		 * Off by default: in the closed loop (overhang rooms 1-300, fused
-		 * VFH) it reached 296 rooms as shipped, but its routes changed and
-		 * two (50, 151) went round the side of a floating box the cameras
-		 * never saw, into it (share/doc/lvfusion/measurements.md). */
-		bool shiftedWindows = false;
+		 * On by default since 2026-12-03, with the sub-pixel steps below:
+		 * the closed loop, whose routes it changes, now keeps off what the
+		 * plan assumes of an overhang (NavigationLoopOptions::
+		 * navigatorKeepsOffAssumed), and went without collision with them
+		 * (share/doc/lvfusion/measurements.md). */
+		bool shiftedWindows = true;
 		/** Find the match, and verify that it is unique and finds its way
 		 * back, on the half-resolution pair (windows of half the side, half
 		 * the columns: ~8x fewer products), then refine it on the full
@@ -154,12 +155,9 @@ class FocusedEpipolarSearch
 		 * disparities; the weights let the centre pixel's surface decide.
 		 * At 2 steps: recalled / phantom bearings, seeded rooms 1-6, 11-16,
 		 * 21-26, 31-36 together, 997 / 73 -> 1009 / 61 (rooms 1-6: recall
-		 * 0.863 -> 0.877, phantom rate 0.033 -> 0.024). Off by default: in
-		 * the closed loop (overhang rooms 1-100, fused VFH) it reached 98
-		 * rooms (shipped 97), but on other routes, and room 77's went round
-		 * a floating box's side the cameras never saw, into it
-		 * (share/doc/lvfusion/measurements.md). */
-		int subpixelIterations = 0;
+		 * 0.863 -> 0.877, phantom rate 0.033 -> 0.024). On by default with
+		 * the shifted windows (above). */
+		int subpixelIterations = 2;
 		double subpixelSigma = 3.0;
 
 		void loadFromConfigFile(
