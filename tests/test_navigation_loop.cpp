@@ -17,6 +17,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <mrpt/config/CConfigFileMemory.h>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -61,6 +63,8 @@ class NavigationLoop : public ::testing::Test
 		s.method = method;
 		s.sensing = sensing;
 		s.navigatorConfig = shippedNavigatorConfig();
+		// The fusion as lvf-navigate runs it: navigate.ini's search options.
+		s.fusion.depth.loadFromConfigFile(mrpt::config::CConfigFileMemory(s.navigatorConfig), "FocusedEpipolarSearch");
 		s.ptgCacheDir = m_dir.string();
 		return s;
 	}

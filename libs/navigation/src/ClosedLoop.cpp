@@ -168,7 +168,8 @@ void ClosedLoop::sense()
 	m_run.grid->insertLaser(*frame.scan, at);
 	if (m_fused && !r.fellBackToLaser)
 		m_run.grid->insertVision(*inCameraView(*r.fused, *frame.stereo, m_setup.fusion), at);
-	m_run.grid->markTraversed(at, m_scenario.world.robot.radius);
+	if (m_loop.navigatorKeepsOffAssumed || m_loop.guidanceOverhangUnseen)
+		m_run.grid->markTraversed(at, m_scenario.world.robot.radius);
 	if (auto* seen = m_run.grid->seenSpace())
 	{
 		if (!r.fellBackToLaser) carveSeenRays(r, at, *seen);

@@ -53,15 +53,19 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	 * round a floating box whose side the cameras never saw that corner is
 	 * the box. Not along a path the plan had to lay through them, nor
 	 * round the robot itself, nor where only a narrower way is left (VFH+
-	 * would find no valley). Measured with the shifted windows and the
-	 * sub-pixel steps (share/doc/lvfusion/measurements.md). */
-	bool navigatorKeepsOffAssumed = true;
+	 * would find no valley). Off by default: measured with the shifted
+	 * windows and the sub-pixel steps (overhang rooms 1-200) it kept the
+	 * robot off the boxes it had hit in 3 rooms, but one more still
+	 * collided and 10 timed out (share/doc/lvfusion/measurements.md). */
+	bool navigatorKeepsOffAssumed = false;
 	/** Fused runs: the overhangs' assumed far parts also take the cells
 	 * vision's 2D grid calls free but whose band column the cameras have
 	 * not seen through (SeenSpace.h, unseenMinHeight): a bearing where
 	 * vision found nothing clears its cells up to the laser's range, under
-	 * a floating box's unmatched side as well. */
-	bool guidanceOverhangUnseen = true;
+	 * a floating box's unmatched side as well. Off by default (with
+	 * navigatorKeepsOffAssumed: more assumed cells, more rooms where the
+	 * robot stalls among them). */
+	bool guidanceOverhangUnseen = false;
 	/** The plan also keeps off the cells from guidanceUnseenFrom to this far
 	 * from the robot whose band column the cameras have not seen free
 	 * (SeenSpace.h; dropped with the overhang depth if that closes every
