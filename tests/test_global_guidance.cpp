@@ -76,6 +76,29 @@ double closestApproach(const lvf::simulation::Box& box, const nav::Guidance& g)
 	return d;
 }
 
+/** What the navigator senses from the origin, 6 m round (robot frame = world frame). */
+mrpt::maps::CSimplePointsMap sensedFromOrigin(const nav::LocalObstacleGrid& grid)
+{
+	mrpt::maps::CSimplePointsMap points;
+	grid.obstaclesNear(mrpt::poses::CPose2D(0, 0, 0), 6.0, points);
+	return points;
+}
+
+/** The farthest sensed x on the robot's axis (|y| < 0.1 m) short of the
+ * room's far wall (x = 5 m): behind a floating box's face, how far the
+ * navigator takes the box to go on. */
+double farthestOnAxisBeforeTheWall(const mrpt::maps::CSimplePointsMap& points)
+{
+	double farthest = 0;
+	for (size_t i = 0; i < points.size(); i++)
+	{
+		float x, y;
+		points.getPoint(i, x, y);
+		if (std::abs(y) < 0.1f && x < 4.5f) farthest = std::max(farthest, double(x));
+	}
+	return farthest;
+}
+
 nav::GuidanceOptions options(const lvf::simulation::World& world)
 {
 	nav::GuidanceOptions o;
@@ -282,18 +305,15 @@ TEST(LocalObstacleGrid, NavigatorSensesTheAssumedFarPartOfAnOverhangWhenAsked)
 	// The farthest sensed x behind the face (short of the wall at 5 m) on
 	// the robot's axis, and whether anything is sensed within 0.15 m of `p`.
 	auto sensed = [&](const TPoint2D& p) {
-		mrpt::maps::CSimplePointsMap points;
-		grid.obstaclesNear(origin, 6.0, points);
-		double farthest = 0;
+		const auto points = sensedFromOrigin(grid);
 		bool nearP = false;
 		for (size_t i = 0; i < points.size(); i++)
 		{
 			float x, y;
 			points.getPoint(i, x, y);
-			if (std::abs(y) < 0.1f && x < 4.5f) farthest = std::max(farthest, double(x));
 			nearP = nearP || std::hypot(x - p.x, y - p.y) < 0.15;
 		}
-		return std::make_pair(farthest, nearP);
+		return std::make_pair(farthestOnAxisBeforeTheWall(points), nearP);
 	};
 	const TPoint2D behindFace(2.45, 0.0);
 	const auto [faceOnly, faceOnlyNear] = sensed(behindFace);
@@ -343,16 +363,7 @@ TEST(LocalObstacleGrid, AssumedFarPartOutlastsRaysUnderTheBoxWhereTheBandWasNotS
 		// From beside the box, rays under it to the far wall (the laser's ranges).
 		grid.insertVision(scanFrom(room, {beside.x(), beside.y()}), beside);
 		grid.senseAssumedOverhangs(0.6);
-		mrpt::maps::CSimplePointsMap points;
-		grid.obstaclesNear(origin, 6.0, points);
-		double farthest = 0;
-		for (size_t i = 0; i < points.size(); i++)
-		{
-			float x, y;
-			points.getPoint(i, x, y);
-			if (std::abs(y) < 0.1f && x < 4.5f) farthest = std::max(farthest, double(x));
-		}
-		return farthest;
+		return farthestOnAxisBeforeTheWall(sensedFromOrigin(grid));
 	};
 	const double in2D = farthestSensedBehindFace(false), in3D = farthestSensedBehindFace(true);
 	std::cout << "sensed behind the face up to x = " << in2D << " m by the 2D grid, " << in3D

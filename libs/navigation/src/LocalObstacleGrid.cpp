@@ -6,6 +6,22 @@
 
 namespace lvf::navigation
 {
+namespace
+{
+/** Cell indices [x0, x1] x [y0, y1]: the square of half side `reach`
+ * round (x, y), clipped to `grid` (empty when it lies outside). */
+struct CellWindow
+{
+	int x0, y0, x1, y1;
+	bool empty() const { return x0 > x1 || y0 > y1; }
+};
+CellWindow cellsAround(const mrpt::maps::COccupancyGridMap2D& grid, double x, double y, double reach)
+{
+	return {std::max(0, grid.x2idx(x - reach)), std::max(0, grid.y2idx(y - reach)),
+		std::min(int(grid.getSizeX()) - 1, grid.x2idx(x + reach)), std::min(int(grid.getSizeY()) - 1, grid.y2idx(y + reach))};
+}
+}  // namespace
+
 LocalObstacleGrid::LocalObstacleGrid(
 	double xMin, double xMax, double yMin, double yMax, double resolution, double occupiedBelow,
 	double visionMargin)
@@ -35,10 +51,9 @@ void LocalObstacleGrid::insertVision(
 void LocalObstacleGrid::markTraversed(const mrpt::poses::CPose2D& robot, double radius)
 {
 	const auto& g = m_vision;
-	const int x0 = std::max(0, g.x2idx(robot.x() - radius)), x1 = std::min(int(g.getSizeX()) - 1, g.x2idx(robot.x() + radius));
-	const int y0 = std::max(0, g.y2idx(robot.y() - radius)), y1 = std::min(int(g.getSizeY()) - 1, g.y2idx(robot.y() + radius));
-	for (int cy = y0; cy <= y1; cy++)
-		for (int cx = x0; cx <= x1; cx++)
+	const CellWindow w = cellsAround(g, robot.x(), robot.y(), radius);
+	for (int cy = w.y0; cy <= w.y1; cy++)
+		for (int cx = w.x0; cx <= w.x1; cx++)
 			if (std::hypot(g.idx2x(cx) - robot.x(), g.idx2y(cy) - robot.y()) <= radius) m_vision.setCell(cx, cy, 1.0f);
 }
 
@@ -122,11 +137,9 @@ void LocalObstacleGrid::obstaclesNear(
 {
 	out.clear();
 	const auto& g = m_laser;
-	const int x0 = std::max(0, g.x2idx(robot.x() - range));
-	const int x1 = std::min(int(g.getSizeX()) - 1, g.x2idx(robot.x() + range));
-	const int y0 = std::max(0, g.y2idx(robot.y() - range));
-	const int y1 = std::min(int(g.getSizeY()) - 1, g.y2idx(robot.y() + range));
-	if (x0 > x1 || y0 > y1) return;
+	const CellWindow w = cellsAround(g, robot.x(), robot.y(), range);
+	if (w.empty()) return;
+	const int x0 = w.x0, y0 = w.y0, x1 = w.x1, y1 = w.y1;
 	// What only vision found is grown by the margin (see the constructor).
 	cv::Mat1b grown;
 	if (m_visionMargin > 0) grown = nearVisionOnly(m_visionMargin, x0, y0, x1, y1);
@@ -178,10 +191,9 @@ void LocalObstacleGrid::assumeUnseenNear(
 	mrpt::maps::COccupancyGridMap2D& out) const
 {
 	if (!m_seen) return;
-	const int x0 = std::max(0, out.x2idx(robot.x - radius)), x1 = std::min(int(out.getSizeX()) - 1, out.x2idx(robot.x + radius));
-	const int y0 = std::max(0, out.y2idx(robot.y - radius)), y1 = std::min(int(out.getSizeY()) - 1, out.y2idx(robot.y + radius));
-	for (int cy = y0; cy <= y1; cy++)
-		for (int cx = x0; cx <= x1; cx++)
+	const CellWindow w = cellsAround(out, robot.x, robot.y, radius);
+	for (int cy = w.y0; cy <= w.y1; cy++)
+		for (int cx = w.x0; cx <= w.x1; cx++)
 		{
 			const double x = out.idx2x(cx), y = out.idx2y(cy), d = std::hypot(x - robot.x, y - robot.y);
 			if (d >= from && d <= radius && unseen(x, y, minHeight)) out.setCell(cx, cy, 0.0f);
