@@ -85,6 +85,7 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --config " + badKey.string(), "key.ini: [FocusedEpipolarSearch] z_mx: unknown key"},
 		{"--input " + sample + " --config " + badValue.string(), "value.ini: [ModelEvaluator] window_size: must be odd"},
 		{"--input " + sample + " --max-time-diff -1", "--max-time-diff: must be >= 0"},
+		{"--input " + sample + " --threads -2", "--threads: must be >= 0"},
 		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: cannot open truth scan file"},
 	};
 	for (const auto& [args, expected] : cases)
@@ -96,6 +97,19 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
 		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
 	}
+}
+
+TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
+{
+	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+	const auto one = fuse(sample + " --threads 1 --outdir one");
+	const auto three = fuse(sample + " --threads 3 --outdir three");
+	ASSERT_EQ(one.status, 0) << one.err;
+	ASSERT_EQ(three.status, 0) << three.err;
+	EXPECT_NE(one.out.find("(1 thread)"), std::string::npos) << one.out;
+	EXPECT_NE(three.out.find("(3 threads)"), std::string::npos) << three.out;
+	EXPECT_EQ(slurp(m_dir / "one/box_room_bearings.csv"), slurp(m_dir / "three/box_room_bearings.csv"));
+	EXPECT_EQ(slurp(m_dir / "one/box_room_fused.rawlog"), slurp(m_dir / "three/box_room_fused.rawlog"));
 }
 
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)

@@ -16,7 +16,9 @@
 //   VFH         one VFH+ cycle on the default window of a 10 cm grid, and
 //               CHolonomicVFH against MRPT's CHolonomicVFF / CHolonomicND on
 //               the same TP-obstacles (VfhBenchmarks.cpp).
-// Everything runs on one thread (cv::setNumThreads(1)).
+// Everything runs on one thread (cv::setNumThreads(1)), but for two rows of
+// the stage table: the fusion and SGBM again with OpenCV's threads on every
+// core (both split their rows among them).
 
 #include <benchmark/benchmark.h>
 #include <lvfusion/common/ProcessMemory.h>
@@ -234,9 +236,9 @@ BENCHMARK(BM_Fusion_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_SGBM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
-const char* kFusionName = "fusion (this paper)";
-const char* kSgbmName = "StereoSGBM 3-way";
-const char* kBmName = "StereoBM";
+const std::string kFusionName = "fusion (this paper)";
+const std::string kSgbmName = "StereoSGBM 3-way";
+const std::string kBmName = "StereoBM";
 
 /** Median time per frame of every stage of every method, over `passes`
  * passes through the box room's frames (each method in turn per frame, so
@@ -266,25 +268,51 @@ void printStageMedians(int passes)
 		{memory.memory.maxTravel > 0 ? "fusion, point memory on" : "fusion, point memory off", memory}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
+	// Every method above on one thread; the fusion as configured and SGBM
+	// (which runs its rows on OpenCV's threads too) also on every core, for
+	// what a robot's computer gives them.
+	const int cores = cv::getNumberOfCPUs();
+	const std::string threadsLabel = ", " + std::to_string(cores) + " threads";
+	const std::string fusionOnCores = "fusion" + threadsLabel, sgbmOnCores = "StereoSGBM 3-way" + threadsLabel;
+	lvf::fusion::CLaserStereoFusion parallelFusion(f.options);
+	auto onCores = [&](auto run) {
+		cv::setNumThreads(cores);
+		run();
+		cv::setNumThreads(1);
+	};
 	lvf::bench::StageMedians medians;
+	auto addFusionTimes = [&](const std::string& name, const lvf::fusion::CLaserStereoFusion::StageTimes& t) {
+		for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model}, {"rectify", t.rectify},
+				 {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
+			medians.add(name, stage, ms);
+	};
 	for (int pass = 0; pass < passes; pass++)
 		for (size_t k = 0; k < f.frames.size(); k++)
 		{
 			const auto& frame = f.frames[k];
 			for (size_t i = 0; i < fusions.size(); i++)
-			{
-				const auto t = fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times;
-				for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model},
-						 {"rectify", t.rectify}, {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
-					medians.add(variants[i].first, stage, ms);
-			}
+				addFusionTimes(variants[i].first, fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
 			f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName);
 			f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName);
+			if (cores > 1)
+				onCores([&] {
+					addFusionTimes(fusionOnCores,
+						parallelFusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
+					f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, sgbmOnCores);
+				});
 		}
 	std::cout << "\nMedian time per frame and stage [ms] on the box room (" << passes << " x "
 			  << f.frames.size() << " frames, " << f.left.front().cols << "x" << f.left.front().rows
-			  << ", one thread):\n";
+			  << ", one thread unless said):\n";
 	medians.print(std::cout, kSgbmName);
+	if (cores > 1)
+		std::cout << std::fixed << std::setprecision(2) << "  on " << cores << " threads: the fusion "
+				  << medians.medianTotal(kFusionName) / medians.medianTotal(fusionOnCores)
+				  << "x its single-thread speed, SGBM "
+				  << medians.medianTotal(kSgbmName) / medians.medianTotal(sgbmOnCores)
+				  << "x; the fusion "
+				  << medians.medianTotal(sgbmOnCores) / medians.medianTotal(fusionOnCores)
+				  << "x faster than SGBM\n";
 }
 
 /** Recall / phantom rate / range error of each method over all frames. */

@@ -2,6 +2,8 @@
 #include <lvfusion/depth/MatchingLevel.h>
 #include <opencv2/imgproc.hpp>
 
+#include <mutex>
+
 namespace lvf::depth
 {
 namespace
@@ -26,53 +28,84 @@ cv::Mat1f pyramidDown(const cv::Mat1f& image)
 }
 }  // namespace
 
-MatchingLevel::MatchingLevel(cv::Mat1f l, cv::Mat1f r, int h, RowGrid rows)
-	: half(h),
-	  left(std::move(l)),
-	  right(std::move(r)),
-	  leftPairs(neighbourPairs(left)),
-	  rightPairs(neighbourPairs(right)),
+struct MatchingLevel::Images
+{
+	Images(cv::Mat1f l, cv::Mat1f r, int h, RowGrid grid)
+		: half(h), left(std::move(l)), right(std::move(r)), leftPairs(neighbourPairs(left)),
+		  rightPairs(neighbourPairs(right)), rows(grid)
+	{
+		windowStatistics(right, half, rows, rightMean, rightStd);
+	}
+
+	/** The left image's statistics are computed on first use, by whichever
+	 * thread asks first: the full level of a coarse-to-fine search takes its
+	 * pixels' statistics from the evaluation and checks left-right on the
+	 * coarse level, so it mostly never needs them (0.7 ms of a box-room
+	 * frame). */
+	void needLeftStatistics()
+	{
+		std::call_once(leftStatisticsDone, [this] { windowStatistics(left, half, rows, leftMean, leftStd); });
+	}
+
+	const int half;
+	const cv::Mat1f left, right;
+	const cv::Mat1i leftPairs, rightPairs;
+	cv::Mat1f rightMean, rightStd;
+	const RowGrid rows;
+	std::once_flag leftStatisticsDone;
+	cv::Mat1f leftMean, leftStd;
+};
+
+MatchingLevel::MatchingLevel(std::shared_ptr<Images> images)
+	: m_images(std::move(images)),
+	  half(m_images->half),
+	  left(m_images->left),
+	  right(m_images->right),
+	  leftPairs(m_images->leftPairs),
+	  rightPairs(m_images->rightPairs),
+	  rightMean(m_images->rightMean),
+	  rightStd(m_images->rightStd),
 	  forward(leftPairs, rightPairs, rightMean, rightStd, half),
 	  shifted(leftPairs, rightPairs, rightMean, rightStd, half),
-	  m_rows(rows),
-	  m_backward(rightPairs, leftPairs, m_leftMean, m_leftStd, half)
+	  m_backward(rightPairs, leftPairs, m_images->leftMean, m_images->leftStd, half)
 {
-	windowStatistics(right, half, m_rows, rightMean, rightStd);
-}
-
-void MatchingLevel::needLeftStatistics()
-{
-	if (m_leftMean.empty()) windowStatistics(left, half, m_rows, m_leftMean, m_leftStd);
-}
-
-EpipolarScores& MatchingLevel::backward()
-{
-	needLeftStatistics();
-	return m_backward;
-}
-
-float MatchingLevel::leftMeanAt(int v, int u)
-{
-	needLeftStatistics();
-	return m_leftMean(v, u);
-}
-
-float MatchingLevel::leftStdAt(int v, int u)
-{
-	needLeftStatistics();
-	return m_leftStd(v, u);
 }
 
 MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid rows)
-	: MatchingLevel(asFloat(l), asFloat(r), h, rows)
+	: MatchingLevel(std::make_shared<Images>(asFloat(l), asFloat(r), h, rows))
 {
 }
 
 MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
 	// Every row where a window fits (only those are matched from): the
 	// same values, and on a 320x240 level faster than OpenCV's filters.
-	: MatchingLevel(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1})
+	: MatchingLevel(std::make_shared<Images>(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1}))
 {
+}
+
+MatchingLevel::~MatchingLevel() = default;
+
+std::unique_ptr<MatchingLevel> MatchingLevel::forAnotherThread() const
+{
+	return std::unique_ptr<MatchingLevel>(new MatchingLevel(m_images));
+}
+
+EpipolarScores& MatchingLevel::backward()
+{
+	m_images->needLeftStatistics();
+	return m_backward;
+}
+
+float MatchingLevel::leftMeanAt(int v, int u)
+{
+	m_images->needLeftStatistics();
+	return m_images->leftMean(v, u);
+}
+
+float MatchingLevel::leftStdAt(int v, int u)
+{
+	m_images->needLeftStatistics();
+	return m_images->leftStd(v, u);
 }
 
 }  // namespace lvf::depth

@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/RowBands.h>
 #include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
@@ -100,40 +101,51 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	cv::Mat1b unverifiable;
 	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
 
-	// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
-	GridWindowSums sums(left, warped, unverifiable, half);
 	out.ncc = cv::Mat1f::zeros(size);
 	out.leftMean = cv::Mat1f::zeros(size);
 	out.leftStd = cv::Mat1f::zeros(size);
 	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::NotEvaluated));
 	const double area = double(m_options.windowSize * m_options.windowSize);
 	const double minVar = out.textureGate * out.textureGate;
-	for (int v = first; v < size.height - half; v += stride)
-	{
-		sums.moveTo(v);
-		for (int u = first; u < size.width - half; u += stride)
+	// Bands of grid rows on OpenCV's threads, each with window sums of its
+	// own (exact integers: the same values whichever row they start from).
+	// Few bands: each starts its sums over a whole window of rows, where
+	// moving down a grid row adds and drops only 2 x stride of them.
+	const lvf::common::RowBands bands(first, size.height - half, stride, 4);
+	std::vector<decltype(out.counts)> bandCounts(static_cast<size_t>(bands.count()), decltype(out.counts){});
+	bands.forEach([&](int b, int firstRow, int endRow) {
+		// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
+		GridWindowSums sums(left, warped, unverifiable, half);
+		auto& counts = bandCounts[static_cast<size_t>(b)];
+		for (int v = firstRow; v < endRow; v += stride)
 		{
-			// The same rules, in the same order, as evaluate(). W's sums
-			// come in 1/32 grey levels: scaling by powers of two is exact.
-			const GridWindowSums::Sums w = sums.at(u);
-			const double meanL = double(w.l) / area;
-			const double meanW = double(w.w32) / 32.0 / area;
-			const double varL = std::max(double(w.ll) / area - meanL * meanL, 0.0);
-			const double varW = std::max(double(w.ww1024) / 1024.0 / area - meanW * meanW, 0.0);
-			const double ncc = varW < minVar
-				? 0.0
-				: (double(w.lw32) / 32.0 / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
-			out.leftMean(v, u) = static_cast<float>(meanL);
-			out.leftStd(v, u) = static_cast<float>(std::sqrt(varL));
-			out.ncc(v, u) = static_cast<float>(ncc);
-			PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
-			if (varL < minVar) s = PixelState::Untextured;
-			if (w.unverifiable > 0) s = PixelState::Unverifiable;
-			if (modelDisparity(v, u) <= 0 && varL >= minVar) s = PixelState::Unmodelled;
-			out.state(v, u) = static_cast<uint8_t>(s);
-			out.counts[static_cast<size_t>(s)]++;
+			sums.moveTo(v);
+			for (int u = first; u < size.width - half; u += stride)
+			{
+				// The same rules, in the same order, as evaluate(). W's sums
+				// come in 1/32 grey levels: scaling by powers of two is exact.
+				const GridWindowSums::Sums w = sums.at(u);
+				const double meanL = double(w.l) / area;
+				const double meanW = double(w.w32) / 32.0 / area;
+				const double varL = std::max(double(w.ll) / area - meanL * meanL, 0.0);
+				const double varW = std::max(double(w.ww1024) / 1024.0 / area - meanW * meanW, 0.0);
+				const double ncc = varW < minVar
+					? 0.0
+					: (double(w.lw32) / 32.0 / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
+				out.leftMean(v, u) = static_cast<float>(meanL);
+				out.leftStd(v, u) = static_cast<float>(std::sqrt(varL));
+				out.ncc(v, u) = static_cast<float>(ncc);
+				PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
+				if (varL < minVar) s = PixelState::Untextured;
+				if (w.unverifiable > 0) s = PixelState::Unverifiable;
+				if (modelDisparity(v, u) <= 0 && varL >= minVar) s = PixelState::Unmodelled;
+				out.state(v, u) = static_cast<uint8_t>(s);
+				counts[static_cast<size_t>(s)]++;
+			}
 		}
-	}
+	});
+	for (const auto& counts : bandCounts)
+		for (size_t k = 0; k < counts.size(); k++) out.counts[k] += counts[k];
 	out.counts[static_cast<size_t>(PixelState::NotEvaluated)] =
 		size.area() - std::accumulate(out.counts.begin(), out.counts.end(), size_t{0});
 	return out;

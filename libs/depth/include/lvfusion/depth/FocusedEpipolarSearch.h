@@ -66,6 +66,16 @@ struct DepthSearchStats
 	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
 	size_t rejectedLeftRight = 0;  //!< failed the left-right check
 	size_t rejectedCore = 0;	//!< failed on the core window
+
+	DepthSearchStats& operator+=(const DepthSearchStats& o)
+	{
+		searchedPixels += o.searchedPixels, skippedUntextured += o.skippedUntextured;
+		skippedEmptyRange += o.skippedEmptyRange, disparitiesTested += o.disparitiesTested;
+		accepted += o.accepted, rejectedWeak += o.rejectedWeak, rejectedNotPeak += o.rejectedNotPeak;
+		rejectedAmbiguous += o.rejectedAmbiguous, rejectedOutOfBand += o.rejectedOutOfBand;
+		rejectedLeftRight += o.rejectedLeftRight, rejectedCore += o.rejectedCore;
+		return *this;
+	}
 };
 
 class FocusedEpipolarSearch
@@ -183,7 +193,9 @@ class FocusedEpipolarSearch
 	FocusedEpipolarSearch() = default;
 	explicit FocusedEpipolarSearch(const TOptions& options) : m_options(options) {}
 
-	/** @param windowSize the NCC window, the one the evaluation used (its
+	/** On OpenCV's threads (cv::setNumThreads; the same result on any
+	 *  number, bit for bit, in the same order).
+	 *  @param windowSize the NCC window, the one the evaluation used (its
 	 *  left-image window statistics are reused).
 	 *  @param floorHeight the model's floor, z in the robot frame [m]. */
 	Result search(
@@ -195,6 +207,14 @@ class FocusedEpipolarSearch
 	const TOptions& options() const { return m_options; }
 
    private:
+	struct Frame;
+	struct RowsFound;
+	/** Searches the grid's rows [firstRow, endRow) with these levels
+	 * (their scores are this call's alone), adding to `found` and marking
+	 * `outcome`. */
+	void searchRows(
+		int firstRow, int endRow, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame, RowsFound& found,
+		cv::Mat1b& outcome) const;
 	/** Criteria a, b, c and the band for the left pixel in column u whose
 	 * ray (robot frame) leaves the camera centre `camera`; `floorModel`:
 	 * the model's surface there is the floor (floorDisparityMargin). */

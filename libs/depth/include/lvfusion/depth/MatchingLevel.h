@@ -8,15 +8,25 @@
 // windows against the left row for the left-right check). The focused
 // search keeps one at full resolution and, for coarse-to-fine matching, one
 // at half resolution.
+//
+// The images and statistics are read-only once made and can be shared:
+// forAnotherThread() gives a view of the same level with scores of its own,
+// so that the search's threads match on one copy of the images.
 
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/WindowStatistics.h>
 #include <opencv2/core.hpp>
 
+#include <memory>
+
 namespace lvf::depth
 {
 class MatchingLevel
 {
+	/** What the threads' views share (MatchingLevel.cpp). */
+	struct Images;
+	std::shared_ptr<Images> m_images;
+
    public:
 	/** Grey images, and the half side of the square matching window. With
 	 * `rows`, the window statistics only on those rows (where a window
@@ -27,11 +37,17 @@ class MatchingLevel
 	MatchingLevel(const MatchingLevel& finer, int half);
 	MatchingLevel(const MatchingLevel&) = delete;
 	MatchingLevel& operator=(const MatchingLevel&) = delete;
+	~MatchingLevel();
+
+	/** The same level, for matching on another thread: the images and the
+	 * statistics are this one's (shared; the left image's computed once
+	 * for all views), the scores its own. */
+	std::unique_ptr<MatchingLevel> forAnotherThread() const;
 
 	const int half;
-	cv::Mat1f left, right;
-	cv::Mat1i leftPairs, rightPairs;  //!< both as neighbour pairs (CrossTerms.h)
-	cv::Mat1f rightMean, rightStd;
+	const cv::Mat1f &left, &right;
+	const cv::Mat1i &leftPairs, &rightPairs;  //!< both as neighbour pairs (CrossTerms.h)
+	const cv::Mat1f &rightMean, &rightStd;
 	EpipolarScores forward;	 //!< a left window against the right row
 	/** Another left window against the right row: a window shifted beside
 	 * the one `forward` holds (FocusedEpipolarSearch's shifted windows). */
@@ -44,15 +60,8 @@ class MatchingLevel
 	float leftStdAt(int v, int u);
 
    private:
-	MatchingLevel(cv::Mat1f left, cv::Mat1f right, int half, RowGrid rows);
-	/** The left image's statistics are computed on first use: the full
-	 * level of a coarse-to-fine search takes its pixels' statistics from
-	 * the evaluation and checks left-right on the coarse level, so it
-	 * mostly never needs them (0.7 ms of a box-room frame). */
-	void needLeftStatistics();
+	explicit MatchingLevel(std::shared_ptr<Images> images);
 
-	RowGrid m_rows;
-	cv::Mat1f m_leftMean, m_leftStd;
 	EpipolarScores m_backward;
 };
 
