@@ -378,6 +378,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	MatchingLevel full(left, right, half, RowGrid{half, m_options.pixelStride});
 	std::unique_ptr<MatchingLevel> coarse;
 	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
+	// Every coarse-to-fine match reads the coarse left window's statistics.
+	if (coarse) coarse->prepareLeftStatistics();
 	out.outcome = cv::Mat1b::zeros(H, W);
 	const SubpixelRefinement refinement(half, m_options.subpixelSigma);
 	const Frame frame{evaluation, g, band, floorHeight, half, m_options.textureGate(evaluation.noiseStd), refinement};

@@ -90,6 +90,8 @@ std::unique_ptr<MatchingLevel> MatchingLevel::forAnotherThread() const
 	return std::unique_ptr<MatchingLevel>(new MatchingLevel(m_images));
 }
 
+void MatchingLevel::prepareLeftStatistics() { m_images->needLeftStatistics(); }
+
 EpipolarScores& MatchingLevel::backward()
 {
 	m_images->needLeftStatistics();

@@ -1,3 +1,4 @@
+#include <lvfusion/common/RowBands.h>
 #include <lvfusion/common/SlidingWindowRows.h>
 #include <lvfusion/depth/WindowStatistics.h>
 
@@ -42,51 +43,54 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 	// double and round to float; so do these.
 	const double scale = 1.0 / (side * side);
 	const size_t n = static_cast<size_t>(width);
-	std::vector<float> columnSum(n, 0.f), columnSquares(n, 0.f), windowSum(n), windowSquares(n);
-	auto addRow = [&](int y, int direction) {
-		const float sign = static_cast<float>(direction);
-		const float* row = image.ptr<float>(y);
-		for (int u = 0; u < width; u++)
-		{
-			columnSum[size_t(u)] += sign * row[u];
-			columnSquares[size_t(u)] += sign * (row[u] * row[u]);
-		}
-	};
-	auto clear = [&] {
-		std::fill(columnSum.begin(), columnSum.end(), 0.f);
-		std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
-	};
 	// The grid's first row where a window fits.
 	const int start = rows.first >= half ? rows.first : rows.first + (half - rows.first + rows.step - 1) / rows.step * rows.step;
-	int previous = -1;
-	for (int v = start; v < image.rows - half; v += rows.step)
-	{
-		// The column sums over rows v - half .. v + half, slid down from the
-		// previous grid row's where the windows overlap (exact integers:
-		// the order of the additions does not matter).
-		lvf::common::slideWindowRows(previous, v, half, clear, addRow);
-		previous = v;
-		// Window sums where a window fits, a column of the window at a time
-		// (loops the compiler vectorises).
-		const int first = half, last = width - 1 - half;
-		std::fill(windowSum.begin(), windowSum.end(), 0.f);
-		std::fill(windowSquares.begin(), windowSquares.end(), 0.f);
-		for (int k = -half; k <= half; k++)
+	// Bands of rows on OpenCV's threads, each sliding sums of its own.
+	lvf::common::RowBands(start, image.rows - half, rows.step, 4).forEach([&](int, int firstRow, int endRow) {
+		std::vector<float> columnSum(n, 0.f), columnSquares(n, 0.f), windowSum(n), windowSquares(n);
+		auto addRow = [&](int y, int direction) {
+			const float sign = static_cast<float>(direction);
+			const float* row = image.ptr<float>(y);
+			for (int u = 0; u < width; u++)
+			{
+				columnSum[size_t(u)] += sign * row[u];
+				columnSquares[size_t(u)] += sign * (row[u] * row[u]);
+			}
+		};
+		auto clear = [&] {
+			std::fill(columnSum.begin(), columnSum.end(), 0.f);
+			std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
+		};
+		int previous = -1;
+		for (int v = firstRow; v < endRow; v += rows.step)
+		{
+			// The column sums over rows v - half .. v + half, slid down from
+			// the previous grid row's where the windows overlap (exact
+			// integers: the order of the additions does not matter).
+			lvf::common::slideWindowRows(previous, v, half, clear, addRow);
+			previous = v;
+			// Window sums where a window fits, a column of the window at a
+			// time (loops the compiler vectorises).
+			const int first = half, last = width - 1 - half;
+			std::fill(windowSum.begin(), windowSum.end(), 0.f);
+			std::fill(windowSquares.begin(), windowSquares.end(), 0.f);
+			for (int k = -half; k <= half; k++)
+				for (int u = first; u <= last; u++)
+				{
+					windowSum[size_t(u)] += columnSum[size_t(u + k)];
+					windowSquares[size_t(u)] += columnSquares[size_t(u + k)];
+				}
+			float* m = mean.ptr<float>(v);
+			float* d = deviation.ptr<float>(v);
 			for (int u = first; u <= last; u++)
 			{
-				windowSum[size_t(u)] += columnSum[size_t(u + k)];
-				windowSquares[size_t(u)] += columnSquares[size_t(u + k)];
+				const float windowMean = static_cast<float>(double(windowSum[size_t(u)]) * scale);
+				const float variance = static_cast<float>(double(windowSquares[size_t(u)]) * scale) - windowMean * windowMean;
+				m[u] = windowMean;
+				d[u] = std::sqrt(std::max(variance, 0.f));
 			}
-		float* m = mean.ptr<float>(v);
-		float* d = deviation.ptr<float>(v);
-		for (int u = first; u <= last; u++)
-		{
-			const float windowMean = static_cast<float>(double(windowSum[size_t(u)]) * scale);
-			const float variance = static_cast<float>(double(windowSquares[size_t(u)]) * scale) - windowMean * windowMean;
-			m[u] = windowMean;
-			d[u] = std::sqrt(std::max(variance, 0.f));
 		}
-	}
+	});
 }
 
 }  // namespace lvf::depth

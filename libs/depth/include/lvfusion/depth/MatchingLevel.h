@@ -55,6 +55,9 @@ class MatchingLevel
 
 	/** A right window against the left row (the left-right check). */
 	EpipolarScores& backward();
+	/** Computes the left image's statistics now rather than on first use:
+	 * before threads share the level, so that none waits for another. */
+	void prepareLeftStatistics();
 	/** The left image's window mean and deviation at (v, u). */
 	float leftMeanAt(int v, int u);
 	float leftStdAt(int v, int u);
