@@ -388,8 +388,8 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	// OpenCV's threads, each band with views of the levels that score for it
 	// alone; the bands' points joined in row order are the single thread's.
 	// Many narrow bands: the rows an obstacle fills cost several times the
-	// others (box room, 2 threads: search 1.59x as fast with 4 bands a
-	// thread, 1.66x with 16).
+	// others (box room, 2 threads against 1: the search stage 1.59x as fast
+	// with 4 bands a thread, 1.66x with 16).
 	const int stride = m_options.pixelStride;
 	const lvf::common::RowBands bands(half, H - half, stride, 16);
 	std::vector<RowsFound> found(static_cast<size_t>(bands.count()));
