@@ -393,7 +393,6 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const int stride = m_options.pixelStride;
 	const lvf::common::RowBands bands(half, H - half, stride, 16);
 	std::vector<RowsFound> found(static_cast<size_t>(bands.count()));
-	std::vector<size_t> evaluations(found.size(), 0);
 	bands.forEach([&](int b, int firstRow, int endRow) {
 		std::unique_ptr<MatchingLevel> fullView, coarseView;
 		if (bands.count() > 1)
@@ -403,14 +402,14 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 		}
 		MatchingLevel& f = fullView ? *fullView : full;
 		MatchingLevel* c = coarseView ? coarseView.get() : coarse.get();
-		searchRows(firstRow, endRow, f, c, frame, found[size_t(b)], out.outcome);
-		evaluations[size_t(b)] = f.forward.evaluations() + (c ? c->forward.evaluations() : 0);
+		RowsFound& rows = found[size_t(b)];
+		searchRows(firstRow, endRow, f, c, frame, rows, out.outcome);
+		rows.stats.disparitiesTested = f.forward.evaluations() + (c ? c->forward.evaluations() : 0);
 	});
-	for (size_t b = 0; b < found.size(); b++)
+	for (const RowsFound& rows : found)
 	{
-		out.points.insert(out.points.end(), found[b].points.begin(), found[b].points.end());
-		out.stats += found[b].stats;
-		out.stats.disparitiesTested += evaluations[b];
+		out.points.insert(out.points.end(), rows.points.begin(), rows.points.end());
+		out.stats += rows.stats;
 	}
 
 	// The grid's first and last columns, and as far beyond them as
