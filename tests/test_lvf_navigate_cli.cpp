@@ -39,6 +39,7 @@ TEST_F(LvfNavigateCli, BadInputIsOneLineAndWritesNothing)
 	expectBadInput("--start 1,2", "--start");
 	expectBadInput("--target 1,x", "'x' is not a number");
 	expectBadInput("--batch 0", "--batch");
+	expectBadInput("--threads -1", "--threads: must be >= 0");
 	expectBadInput("--batch 2 --room-kind attic", "--room-kind");
 	const auto bad = write("bad.ini", "[NavigationLoop]\ncontrol_period = 0.1\nno_such_key = 1\n");
 	expectBadInput("--config '" + bad.string() + "'", "no_such_key");

@@ -9,6 +9,7 @@
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/metrics/TruthScanFile.h>
 #include <lvfusion/plugin/registerAllClasses.h>
@@ -17,7 +18,6 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
-#include <opencv2/core/utility.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -113,7 +113,7 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argTruth("t", "truth", "Truth scans (CSV) to score against (default: IN_truth_scans.csv if it exists)", false, "", "FILE.csv", cmd);
 	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
 	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m] (default 0.05)", false, 0.05, "M", cmd);
-	TCLAP::ValueArg<int> argThreads("", "threads", "Threads for the model check and the depth search (OpenCV's pool; 0: as many as OpenCV takes, one per core; the results are the same on any number) (default 0)", false, 0, "N", cmd);
+	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
@@ -128,8 +128,7 @@ int run(int argc, char** argv)
 	}
 	if (!(argMaxDt.getValue() >= 0)) throw InputError("--max-time-diff", "", "must be >= 0");
 	if (!(argGridRes.getValue() > 0)) throw InputError("--grid-resolution", "", "must be > 0");
-	if (argThreads.getValue() < 0) throw InputError("--threads", "", "must be >= 0");
-	if (argThreads.getValue() > 0) cv::setNumThreads(argThreads.getValue());
+	threads.apply();
 	lvf::registerAllClasses();
 
 	const std::string input = argInput.getValue();
@@ -210,10 +209,10 @@ int run(int argc, char** argv)
 		std::cout << mrpt::format(
 			"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
 			"%zu bad frames, %zu calibration fall-backs) in %.2f s\n"
-			"  fusion %.2f ms per frame (%d %s)%s\n",
+			"  fusion %.2f ms per frame (%s)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
 			in.unpairedScans, badFrames, fallbacks, timer.Tac(), timeSum / double(in.frames.size()),
-			cv::getNumThreads(), cv::getNumThreads() == 1 ? "thread" : "threads", noOdometry.c_str());
+			lvf::common::ThreadsOption::describe().c_str(), noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
 				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "
