@@ -3,6 +3,7 @@
 #include <lvfusion/simulation/SimulatedStereoRig.h>
 #include <mrpt/core/bits_math.h>
 #include <opencv2/core.hpp>
+#include <opencv2/core/utility.hpp>
 
 #include <cmath>
 
@@ -122,12 +123,20 @@ SimulatedStereoRig::Images SimulatedStereoRig::render(
 	Images out;
 	const mrpt::poses::CPose3D left = robotPose + m_options.leftCameraPose();
 	const mrpt::poses::CPose3D right = left + m_options.rightCameraPose();
-	renderCamera(
-		world, left, *m_leftRays, m_options.leftGain, m_options.leftNoiseStd,
-		2 * noiseSeed, out.left, withDepth ? &out.leftDepth : nullptr);
-	renderCamera(
-		world, right, *m_rightRays, m_options.rightGain,
-		m_options.rightNoiseStd, 2 * noiseSeed + 1, out.right, nullptr);
+	// Two independent renders, each with its own noise seed: side by side
+	// on OpenCV's threads (one after the other on one thread), the same
+	// images either way.
+	cv::parallel_for_(cv::Range(0, 2), [&](const cv::Range& cameras) {
+		for (int k = cameras.start; k < cameras.end; k++)
+			if (k == 0)
+				renderCamera(
+					world, left, *m_leftRays, m_options.leftGain, m_options.leftNoiseStd,
+					2 * noiseSeed, out.left, withDepth ? &out.leftDepth : nullptr);
+			else
+				renderCamera(
+					world, right, *m_rightRays, m_options.rightGain,
+					m_options.rightNoiseStd, 2 * noiseSeed + 1, out.right, nullptr);
+	});
 	return out;
 }
 
