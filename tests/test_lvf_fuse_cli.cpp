@@ -103,13 +103,14 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 {
 	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
 	const auto one = fuse(sample + " --threads 1 --outdir one");
-	const auto three = fuse(sample + " --threads 3 --outdir three");
+	const auto two = fuse(sample + " --threads 2 --outdir two");
 	ASSERT_EQ(one.status, 0) << one.err;
-	ASSERT_EQ(three.status, 0) << three.err;
+	ASSERT_EQ(two.status, 0) << two.err;
+	EXPECT_EQ(two.err, "");
 	EXPECT_NE(one.out.find("(1 thread)"), std::string::npos) << one.out;
-	EXPECT_NE(three.out.find("(3 threads)"), std::string::npos) << three.out;
-	EXPECT_EQ(slurp(m_dir / "one/box_room_bearings.csv"), slurp(m_dir / "three/box_room_bearings.csv"));
-	EXPECT_EQ(slurp(m_dir / "one/box_room_fused.rawlog"), slurp(m_dir / "three/box_room_fused.rawlog"));
+	EXPECT_NE(two.out.find("(2 threads)"), std::string::npos) << two.out;
+	EXPECT_EQ(slurp(m_dir / "one/box_room_bearings.csv"), slurp(m_dir / "two/box_room_bearings.csv"));
+	EXPECT_EQ(slurp(m_dir / "one/box_room_fused.rawlog"), slurp(m_dir / "two/box_room_fused.rawlog"));
 }
 
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
