@@ -13,16 +13,13 @@ namespace lvf::depth
 cv::Mat1i neighbourPairs(const cv::Mat1f& image)
 {
 	cv::Mat1i pairs(image.rows, image.cols);
-	lvf::common::RowBands(0, image.rows, 1, 4).forEach([&](int, int firstRow, int endRow) {
-		for (int v = firstRow; v < endRow; v++)
-		{
-			const float* in = image.ptr<float>(v);
-			int32_t* out = pairs.ptr<int32_t>(v);
-			const int last = image.cols - 1;
-			for (int x = 0; x < last; x++)
-				out[x] = static_cast<int32_t>(in[x]) | (static_cast<int32_t>(in[x + 1]) << 16);
-			out[last] = static_cast<int32_t>(in[last]);
-		}
+	lvf::common::forEachRow(image.rows, [&](int v) {
+		const float* in = image.ptr<float>(v);
+		int32_t* out = pairs.ptr<int32_t>(v);
+		const int last = image.cols - 1;
+		for (int x = 0; x < last; x++)
+			out[x] = static_cast<int32_t>(in[x]) | (static_cast<int32_t>(in[x + 1]) << 16);
+		out[last] = static_cast<int32_t>(in[last]);
 	});
 	return pairs;
 }

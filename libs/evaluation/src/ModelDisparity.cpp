@@ -89,26 +89,23 @@ cv::Mat1f renderModelDisparity(
 
 	cv::Mat1f disparity = cv::Mat1f::zeros(g.size);
 	const double lastCol = g.size.width - 1;
-	// Rows are independent: bands of them on OpenCV's threads (RowBands.h).
-	lvf::common::RowBands(0, g.size.height, 1, 4).forEach([&](int, int firstRow, int endRow) {
-		for (int v = firstRow; v < endRow; v++)
+	// Rows are independent: on OpenCV's threads (RowBands.h).
+	lvf::common::forEachRow(g.size.height, [&](int v) {
+		float* row = disparity.ptr<float>(v);
+		if (floorOk)
+			for (int u = 0; u < g.size.width; u++)
+				row[u] = static_cast<float>(std::max(0.0, floor.at(u, v)));
+		for (const Wall& w : walls)
 		{
-			float* row = disparity.ptr<float>(v);
-			if (floorOk)
-				for (int u = 0; u < g.size.width; u++)
-					row[u] = static_cast<float>(std::max(0.0, floor.at(u, v)));
-			for (const Wall& w : walls)
-			{
-				double lo = 0, hi = lastCol;
-				clipToNonNegative(w.edgeA, v, lo, hi);
-				clipToNonNegative(w.edgeB, v, lo, hi);
-				clipToNonNegative(w.disparity, v, lo, hi);	// in front of the camera
-				if (lo > hi) continue;
-				const int u0 = static_cast<int>(std::ceil(lo)), u1 = static_cast<int>(std::floor(hi));
-				const double rowC = w.disparity.b * v + w.disparity.c;
-				for (int u = u0; u <= u1; u++)
-					row[u] = std::max(row[u], static_cast<float>(w.disparity.a * u + rowC));
-			}
+			double lo = 0, hi = lastCol;
+			clipToNonNegative(w.edgeA, v, lo, hi);
+			clipToNonNegative(w.edgeB, v, lo, hi);
+			clipToNonNegative(w.disparity, v, lo, hi);	// in front of the camera
+			if (lo > hi) continue;
+			const int u0 = static_cast<int>(std::ceil(lo)), u1 = static_cast<int>(std::floor(hi));
+			const double rowC = w.disparity.b * v + w.disparity.c;
+			for (int u = u0; u <= u1; u++)
+				row[u] = std::max(row[u], static_cast<float>(w.disparity.a * u + rowC));
 		}
 	});
 	return disparity;

@@ -31,30 +31,27 @@ void warpByModel(
 	unverifiable.create(size);
 	const int width = size.width;
 	const float cxOffset = static_cast<float>(geometry.cxOffset), lastColumn = static_cast<float>(width - 1);
-	// Rows are independent: bands of them on OpenCV's threads (RowBands.h).
-	lvf::common::RowBands(0, size.height, 1, 4).forEach([&](int, int firstRow, int endRow) {
-		for (int v = firstRow; v < endRow; v++)
+	// Rows are independent: on OpenCV's threads (RowBands.h).
+	lvf::common::forEachRow(size.height, [&](int v) {
+		const float* d = modelDisparity.ptr<float>(v);
+		const uint8_t* row = right.ptr<uint8_t>(v);
+		float* out = warped.ptr<float>(v);
+		uint8_t* bad = unverifiable.ptr<uint8_t>(v);
+		for (int u = 0; u < width; u++)
 		{
-			const float* d = modelDisparity.ptr<float>(v);
-			const uint8_t* row = right.ptr<uint8_t>(v);
-			float* out = warped.ptr<float>(v);
-			uint8_t* bad = unverifiable.ptr<uint8_t>(v);
-			for (int u = 0; u < width; u++)
-			{
-				const float x = static_cast<float>(u) - d[u] + cxOffset;
-				bad[u] = d[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
-				// remap rounds the column to the nearest 1/32 (ties to even) and
-				// weights its two neighbours; outside the image they are 0.
-				const int fixed = cvRound(x * kSubpixelSteps);
-				const int left = fixed >> kSubpixelBits;
-				const float w1 = kRightWeight[size_t(fixed & (kSubpixelSteps - 1))], w0 = 1.f - w1;
-				if (static_cast<unsigned>(left) < static_cast<unsigned>(width - 1))
-					out[u] = float(row[left]) * w0 + float(row[left + 1]) * w1;
-				else if (left >= width || left + 1 < 0)
-					out[u] = 0.f;
-				else
-					out[u] = (left >= 0 ? float(row[left]) : 0.f) * w0 + (left + 1 < width ? float(row[left + 1]) : 0.f) * w1;
-			}
+			const float x = static_cast<float>(u) - d[u] + cxOffset;
+			bad[u] = d[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
+			// remap rounds the column to the nearest 1/32 (ties to even) and
+			// weights its two neighbours; outside the image they are 0.
+			const int fixed = cvRound(x * kSubpixelSteps);
+			const int left = fixed >> kSubpixelBits;
+			const float w1 = kRightWeight[size_t(fixed & (kSubpixelSteps - 1))], w0 = 1.f - w1;
+			if (static_cast<unsigned>(left) < static_cast<unsigned>(width - 1))
+				out[u] = float(row[left]) * w0 + float(row[left + 1]) * w1;
+			else if (left >= width || left + 1 < 0)
+				out[u] = 0.f;
+			else
+				out[u] = (left >= 0 ? float(row[left]) : 0.f) * w0 + (left + 1 < width ? float(row[left + 1]) : 0.f) * w1;
 		}
 	});
 }

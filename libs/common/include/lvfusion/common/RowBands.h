@@ -52,4 +52,14 @@ class RowBands
 	int m_first, m_step, m_rows, m_bands = 1;
 };
 
+/** f(v) for every row v of [0, rows), in bands on OpenCV's threads: for
+ * loops whose rows are independent and cost alike. */
+template <typename F>
+void forEachRow(int rows, F f)
+{
+	RowBands(0, rows, 1, 4).forEach([&](int, int first, int end) {
+		for (int v = first; v < end; v++) f(v);
+	});
+}
+
 }  // namespace lvf::common
