@@ -82,7 +82,11 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	// by default since 2026-12-03, keep matches off the background beside
 	// objects: recall 0.912 (259 of 284), phantom rate 0.033 -> 0.019 (11
 	// of 577): both of the targets, met here (lvf-fuse on these
-	// rooms' rawlogs, with the rawlog's noisy odometry: the same).
+	// rooms' rawlogs, with the rawlog's noisy odometry: the same). The range
+	// rules of 2026-12-03 (ScanFusion.h: central_share, range_support),
+	// chosen for the real images (Middlebury Motorcycle 0.739 -> 0.826),
+	// trade a little recall for fewer phantoms here: 0.901 (256 of 284),
+	// 0.017 (10 of 577).
 	EXPECT_GE(total.recall(), 0.90);
 	EXPECT_LE(total.phantomRate(), 0.02);
 	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);

@@ -261,28 +261,80 @@ TEST(VisualDepth, FloorDisparityMarginFindsLowObstaclesStandingOnTheFloor)
 	EXPECT_LE(narrowed.score.hiddenRangeErrorMedian, 0.08);
 }
 
-TEST(ScanFusion, ClustersAtTheSearchedImageEdgeNeedNotStraddleTheirBearing)
+namespace
 {
-	// A 1-degree scan; three points 2 m out, all just right of bearing 0
-	// (offsets +0.2 to +0.4 of a bin): inside the image they do not cover
-	// the bin's own ray, so the bin stays empty; from the outermost searched
-	// columns they may, since nothing beyond the image edge was searched.
+/** A 1-degree scan over 180 degrees, every bearing 8 m. */
+mrpt::obs::CObservation2DRangeScan oneDegreeScan()
+{
 	mrpt::obs::CObservation2DRangeScan scan;
 	scan.aperture = static_cast<float>(M_PI);
 	scan.rightToLeft = true;
 	scan.resizeScan(181);
 	for (size_t i = 0; i < scan.getScanSize(); i++) scan.setScanRange(i, 8.f), scan.setScanRangeValidity(i, true);
+	return scan;
+}
+
+/** A visual point `range` m out, `offset` of a 1-degree bin left of bearing 0. */
+depth::VisualPoint pointAt(double range, double offset, float u = 320)
+{
+	const double bearing = offset * M_PI / 180;
+	depth::VisualPoint p;
+	p.u = u;
+	p.robot = {range * std::cos(bearing), range * std::sin(bearing), 0.6};
+	return p;
+}
+}  // namespace
+
+TEST(ScanFusion, ClustersAtTheSearchedImageEdgeNeedNotStraddleTheirBearing)
+{
+	// Three points 2 m out, all just right of bearing 0 (offsets +0.2 to
+	// +0.4 of a bin): inside the image they do not cover the bin's own ray,
+	// so the bin stays empty; from the outermost searched columns they may,
+	// since nothing beyond the image edge was searched.
+	const auto scan = oneDegreeScan();
 	std::vector<depth::VisualPoint> points;
-	for (double offset : {0.2, 0.3, 0.4})
-	{
-		const double bearing = offset * M_PI / 180;
-		depth::VisualPoint p;
-		p.u = 637;
-		p.robot = {2 * std::cos(bearing), 2 * std::sin(bearing), 0.6};
-		points.push_back(p);
-	}
+	for (double offset : {0.2, 0.3, 0.4}) points.push_back(pointAt(2, offset, 637));
 	const fusion::ScanFusion fusion;
 	EXPECT_TRUE(std::isinf(fusion.visualRanges(scan, points)[90]));
 	EXPECT_TRUE(std::isinf(fusion.visualRanges(scan, points, fusion::ScanFusion::SearchedColumns{2, 700, 3})[90]));
 	EXPECT_NEAR(fusion.visualRanges(scan, points, fusion::ScanFusion::SearchedColumns{2, 638, 3})[90], 2.0, 1e-3);
+}
+
+TEST(ScanFusion, TheRangeIsTheNearestPointNearTheBearing)
+{
+	// A table top seen from above: three points on the top 2.10 m out right
+	// at the bearing, and its front edge, 2.00 m, found twice a little
+	// beside it (0.1 of a bin). The three nearest the bearing miss the
+	// edge; with central_share 0.15 the edge's points count too.
+	const auto scan = oneDegreeScan();
+	std::vector<depth::VisualPoint> points;
+	for (double offset : {-0.02, 0.0, 0.02}) points.push_back(pointAt(2.10, offset));
+	for (double offset : {-0.1, 0.1}) points.push_back(pointAt(2.00, offset));
+	fusion::ScanFusion::TOptions options;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 2.00, 1e-3);
+	options.centralShare = 0;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 2.10, 1e-3);
+	// Farther from the bearing than the share, they do not.
+	options.centralShare = 0.05;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 2.10, 1e-3);
+}
+
+TEST(ScanFusion, AnIsolatedNearestPointDoesNotSetTheRange)
+{
+	// A face 2.00 m out with one point 0.12 m too near (matching noise),
+	// still within cluster_tolerance of the others: it is not the range,
+	// since no other point supports it within range_support.
+	const auto scan = oneDegreeScan();
+	std::vector<depth::VisualPoint> points{pointAt(1.88, 0.0), pointAt(2.00, 0.05), pointAt(2.01, -0.05), pointAt(2.02, 0.1)};
+	fusion::ScanFusion::TOptions options;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 2.00, 1e-3);
+	options.rangeSupport = 0;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 1.88, 1e-3);
+	// A second point beside it makes it a surface.
+	points.push_back(pointAt(1.89, 0.02));
+	options.rangeSupport = 0.03;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 1.88, 1e-3);
+	// Every point chosen isolated (spread over the tolerance): their median.
+	const std::vector<depth::VisualPoint> spread{pointAt(1.90, 0.0), pointAt(1.97, 0.05), pointAt(2.04, -0.05)};
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, spread)[90], 1.97, 1e-3);
 }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
+#include <utility>
 
 namespace lvf::depth
 {
@@ -17,6 +19,7 @@ void HorizontalSurfaceGrowth::TOptions::loadFromConfigFile(
 {
 	lvf::common::IniSection ini(source, section);
 	enabled = ini.flag("enabled", enabled);
+	sideways = ini.flag("sideways", sideways);
 	acceptNcc = ini.real("accept_ncc", acceptNcc, -1, 1);
 	windowHalfWidth = ini.integer("window_half_width", windowHalfWidth, 1, 50);
 	windowHalfHeight = ini.integer("window_half_height", windowHalfHeight, 0, 50);
@@ -32,6 +35,7 @@ void HorizontalSurfaceGrowth::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
 	writeOption(c, s, "enabled", enabled, "follow horizontal surfaces the search found towards the camera, row by row (true/false)");
+	writeOption(c, s, "sideways", sideways, "also follow each surface sideways along its start row, a grid column at a time, and each such column to the surface's edge (true/false)");
 	writeOption(c, s, "accept_ncc", acceptNcc, "each row's window, sheared as the plane shears it, must score this NCC [-1..1]");
 	writeOption(c, s, "window_half_width", windowHalfWidth, "that window's half width [px]");
 	writeOption(c, s, "window_half_height", windowHalfHeight, "its half height [px]; the last this many rows of a walk are dropped (the window straddles the edge there)");
@@ -184,45 +188,118 @@ double HorizontalSurfaceGrowth::fittedHeight(
 	return fitted;
 }
 
+namespace
+{
+/** A row of a walk where the plane holds. */
+struct PlaneRow
+{
+	int v;
+	double disparity, ncc;
+};
+
+/** One plane's walks: where it holds, and each column followed from the
+ * start row to the surface's edge. */
+class SurfaceWalk
+{
+   public:
+	SurfaceWalk(
+		const PlaneWindow& plane, const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band,
+		const HorizontalSurfaceGrowth::TOptions& options, double textureGate, int stride, int startRow, int step)
+		: m_plane(plane),
+		  m_evaluation(evaluation),
+		  m_band(band),
+		  m_o(options),
+		  m_textureGate(textureGate),
+		  m_stride(stride),
+		  m_startRow(startRow),
+		  m_step(step)
+	{
+	}
+
+	int startRow() const { return m_startRow; }
+
+	/** The plane's row at (u, v), if its sheared window scores
+	 * `accept_ncc` on texture, peaks near the plane and beats the model. */
+	std::optional<PlaneRow> holds(int u, int v) const
+	{
+		const auto d = m_plane.disparity(u, v);
+		const auto s = m_plane.score(u, v, 0.0);
+		if (!d || !s || s->ncc < m_o.acceptNcc || s->leftStd < m_textureGate) return std::nullopt;
+		if (!peaksNearThePlane(m_plane, u, v, s->ncc)) return std::nullopt;
+		const float model = m_evaluation.modelDisparity(v, u);
+		if (model > 0)
+		{
+			const auto explained = m_plane.score(u, v, model - *d);
+			if (explained && explained->ncc > s->ncc - m_o.modelMargin) return std::nullopt;
+		}
+		return PlaneRow{v, *d, s->ncc};
+	}
+
+	/** Follows column u from the row after the start row until the plane
+	 * fails, after the rows `walked` already holds, and appends the rows
+	 * kept to `grown`. */
+	void column(int u, std::vector<PlaneRow> walked, std::vector<VisualPoint>& grown) const
+	{
+		for (int v = m_startRow + m_step;; v += m_step)
+		{
+			const auto row = holds(u, v);
+			if (!row) break;
+			walked.push_back(*row);
+		}
+		// The window straddles the edge for the last half-height rows.
+		const size_t halfHeight = size_t(m_o.windowHalfHeight);
+		const size_t keep = walked.size() > halfHeight ? walked.size() - halfHeight : 0;
+		for (size_t i = 0; i < keep; i++)
+		{
+			// Every stride-th row, as the search's grid, and the last one kept.
+			if ((i + 1) % size_t(m_stride) != 0 && i + 1 != keep) continue;
+			const PlaneRow& row = walked[i];
+			const Eigen::Vector3d x = m_plane.point(u, row.v, row.disparity);
+			if (m_band.contains(x.z()))
+				grown.push_back({static_cast<float>(u), static_cast<float>(row.v), static_cast<float>(row.disparity),
+					static_cast<float>(row.ncc), x});
+		}
+	}
+
+   private:
+	const PlaneWindow& m_plane;
+	const lvf::evaluation::ModelEvaluation& m_evaluation;
+	const HeightBand& m_band;
+	const HorizontalSurfaceGrowth::TOptions& m_o;
+	double m_textureGate;
+	int m_stride, m_startRow, m_step;
+};
+}  // namespace
+
 void HorizontalSurfaceGrowth::walk(
 	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
 	const lvf::evaluation::ModelEvaluation& evaluation, const HeightBand& band, double textureGate, int stride,
-	int u, const VisualPoint& start, int step, std::vector<VisualPoint>& grown) const
+	int u, const VisualPoint& start, int step, WalkedColumns& walked, std::vector<VisualPoint>& grown) const
 {
 	const TOptions& o = m_options;
 	const PlaneWindow plane(
 		left, right, g, fittedHeight(left, right, g, u, start, step, stride), o.windowHalfWidth, o.windowHalfHeight);
-	struct Row
+	const SurfaceWalk surface(plane, evaluation, band, o, textureGate, stride, static_cast<int>(start.v), step);
+	surface.column(u, {}, grown);
+	if (!o.sideways) return;
+	// Along the start row, a grid column at a time each way, up to a column
+	// already followed; the last columns whose window reaches past the
+	// surface's side (half a window) are dropped, as the rows at its edge.
+	const int straddling = (o.windowHalfWidth + stride - 1) / stride;
+	for (const int direction : {-1, 1})
 	{
-		int v;
-		double disparity, ncc;
-	};
-	std::vector<Row> walked;
-	for (int v = static_cast<int>(start.v) + step;; v += step)
-	{
-		const auto d = plane.disparity(u, v);
-		const auto s = plane.score(u, v, 0.0);
-		if (!d || !s || s->ncc < o.acceptNcc || s->leftStd < textureGate) break;
-		if (!peaksNearThePlane(plane, u, v, s->ncc)) break;
-		const float model = evaluation.modelDisparity(v, u);
-		if (model > 0)
+		std::vector<std::pair<int, PlaneRow>> side;
+		for (int c = u + direction * stride; !walked.count({c, step}); c += direction * stride)
 		{
-			const auto explained = plane.score(u, v, model - *d);
-			if (explained && explained->ncc > s->ncc - o.modelMargin) break;
+			const auto row = surface.holds(c, surface.startRow());
+			if (!row) break;
+			side.push_back({c, *row});
 		}
-		walked.push_back({v, *d, s->ncc});
-	}
-	// The window straddles the edge for the last half-height rows.
-	const size_t keep = walked.size() > size_t(o.windowHalfHeight) ? walked.size() - size_t(o.windowHalfHeight) : 0;
-	for (size_t i = 0; i < keep; i++)
-	{
-		// Every stride-th row, as the search's grid, and the last one kept.
-		if ((i + 1) % size_t(stride) != 0 && i + 1 != keep) continue;
-		const Row& row = walked[i];
-		const Eigen::Vector3d x = plane.point(u, row.v, row.disparity);
-		if (band.contains(x.z()))
-			grown.push_back({static_cast<float>(u), static_cast<float>(row.v), static_cast<float>(row.disparity),
-				static_cast<float>(row.ncc), x});
+		for (size_t i = 0; i + size_t(straddling) < side.size(); i++)
+		{
+			walked.insert({side[i].first, step});
+			surface.column(side[i].first, {side[i].second}, grown);
+		}
 	}
 }
 
@@ -236,13 +313,20 @@ size_t HorizontalSurfaceGrowth::grow(
 	std::map<int, std::vector<size_t>> byColumn;
 	for (size_t i = 0; i < points.size(); i++) byColumn[static_cast<int>(std::lround(points[i].u))].push_back(i);
 
-	std::vector<VisualPoint> grown;
+	// A surface below the camera comes nearer down the image, one above it
+	// up the image: one walk each way per column, from the column's nearest
+	// point with a witness.
+	struct Start
+	{
+		int u;
+		const VisualPoint* point;
+		int step;
+	};
+	std::vector<Start> starts;
+	WalkedColumns walked;
 	for (auto& [u, indices] : byColumn)
 	{
 		std::sort(indices.begin(), indices.end(), [&](size_t a, size_t b) { return points[a].v < points[b].v; });
-		// A surface below the camera comes nearer down the image, one above
-		// it up the image: one walk each way per column, from the column's
-		// nearest point with a witness.
 		for (const int step : {1, -1})
 		{
 			const bool below = step > 0;
@@ -250,11 +334,15 @@ size_t HorizontalSurfaceGrowth::grow(
 			{
 				const VisualPoint& p = points[indices[below ? indices.size() - 1 - k : k]];
 				if ((p.robot.z() < cameraHeight) != below || !hasWitness(p, points, indices, step, stride)) continue;
-				walk(left, right, g, evaluation, band, textureGate, stride, u, p, step, grown);
+				starts.push_back({u, &p, step});
+				walked.insert({u, step});
 				break;
 			}
 		}
 	}
+	std::vector<VisualPoint> grown;
+	for (const Start& s : starts)
+		walk(left, right, g, evaluation, band, textureGate, stride, s.u, *s.point, s.step, walked, grown);
 	points.insert(points.end(), grown.begin(), grown.end());
 	return grown.size();
 }

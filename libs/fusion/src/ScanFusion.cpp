@@ -18,6 +18,8 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	minPoints = ini.integer("min_points", minPoints, 1, 10000);
 	clusterTolerance = ini.real("cluster_tolerance", clusterTolerance, 0, 10);
 	centreSlack = ini.real("centre_slack", centreSlack, -0.5, 0.5);
+	centralShare = ini.real("central_share", centralShare, 0, 0.5);
+	rangeSupport = ini.real("range_support", rangeSupport, 0, 10);
 	bridgeWidth = ini.real("bridge_width", bridgeWidth, 0, 10);
 	ini.rejectUnknownKeys();
 }
@@ -28,7 +30,38 @@ void ScanFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_points", minPoints, "visual points a bearing needs before vision may shorten it");
 	writeOption(c, s, "cluster_tolerance", clusterTolerance, "those points must lie within this span of range [m]");
 	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin (negative: reach past it on both sides by that much)");
+	writeOption(c, s, "central_share", centralShare, "the bearing's range is the nearest of its cluster's min_points points nearest the bin's bearing, and of any others nearer it than this fraction of a bin; 0: off [0..0.5]");
+	writeOption(c, s, "range_support", rangeSupport, "that nearest point needs another point of the cluster within this much range of it (else the next one; all isolated: their median); 0: off [m]");
 	writeOption(c, s, "bridge_width", bridgeWidth, "close gaps in an edge at most this wide between two bearings whose ranges agree within cluster_tolerance, one of them set by vision: bearings between that are farther than both, and not placed by vision within cluster_tolerance of them, take the line between them; 0: off [m]");
+}
+
+float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector<Hit>::iterator last) const
+{
+	// On a slanted face the points differ in range with bearing, so look at
+	// those nearest the bin's bearing: the min_points nearest, and any
+	// others within central_share of a bin of it.
+	std::sort(first, last, [](const Hit& a, const Hit& b) { return std::abs(a.offset) < std::abs(b.offset); });
+	auto chosenEnd = first + std::min<long>(m_options.minPoints, last - first);
+	while (chosenEnd != last && std::abs(chosenEnd->offset) < m_options.centralShare) chosenEnd++;
+	// Of them the nearest, since a horizontal surface (a table top seen from
+	// above) starts at its nearest point; but not a point no other point of
+	// the cluster lies near: that is the tail of the matching noise.
+	auto supported = [&](const Hit& h) {
+		return std::any_of(first, last, [&](const Hit& o) {
+			return &o != &h && std::abs(o.range - h.range) <= m_options.rangeSupport;
+		});
+	};
+	float nearest = std::numeric_limits<float>::infinity();
+	std::vector<float> chosen;
+	for (auto it = first; it != chosenEnd; ++it)
+	{
+		chosen.push_back(it->range);
+		if (m_options.rangeSupport <= 0 || supported(*it)) nearest = std::min(nearest, it->range);
+	}
+	if (std::isfinite(nearest)) return nearest;
+	// All of them isolated (points spread over the tolerance): their median.
+	std::nth_element(chosen.begin(), chosen.begin() + long(chosen.size() / 2), chosen.end());
+	return chosen[chosen.size() / 2];
 }
 
 std::vector<float> ScanFusion::visualRanges(
@@ -36,12 +69,6 @@ std::vector<float> ScanFusion::visualRanges(
 	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched,
 	std::vector<bool>* bridged) const
 {
-	struct Hit
-	{
-		float range;
-		float offset;  //!< bearing minus the bin's own bearing, in bin steps
-		bool atImageEdge;  //!< from the outermost searched columns
-	};
 	// Remembered points (VisualPointMemory) have no pixel: u is NaN.
 	auto atImageEdge = [&](float u) {
 		return searched && std::isfinite(u) && (u - searched->first < searched->step || searched->last - u < searched->step);
@@ -89,16 +116,7 @@ std::vector<float> ScanFusion::visualRanges(
 			for (size_t j = k; j < end; j++)
 				lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset), edge |= hits[j].atImageEdge;
 			if (!edge && (lo > slack || hi < -slack)) continue;
-			// The range along the bin's own ray: on a slanted face the points
-			// differ in range with bearing, so look at those nearest the bin's
-			// bearing; of them the nearest, since a horizontal surface (a table
-			// top seen from above) starts at its nearest point.
-			std::sort(hits.begin() + long(k), hits.begin() + long(end), [](const Hit& a, const Hit& b) {
-				return std::abs(a.offset) < std::abs(b.offset);
-			});
-			float nearest = hits[k].range;
-			for (size_t j = k; j < k + need; j++) nearest = std::min(nearest, hits[j].range);
-			out[i] = nearest;
+			out[i] = rangeAlongTheRay(hits.begin() + long(k), hits.begin() + long(end));
 			break;
 		}
 	}
