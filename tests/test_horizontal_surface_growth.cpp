@@ -1,7 +1,8 @@
 // HorizontalSurfaceGrowth (stage 4b) on a table seen from above: the laser
 // passes between its legs, the search finds its top behind the front edge,
 // and the growth must follow the top to the edge -- on the top's height, not
-// past its edge -- and bring the fused ranges to the simulator's truth.
+// past its edge -- and bring the fused ranges to the simulator's truth; a
+// farther table, found on few columns, is followed sideways along its rows.
 
 #include <gtest/gtest.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
