@@ -273,7 +273,7 @@ void printStageMedians(int passes)
 	// what a robot's computer gives them.
 	const int cores = cv::getNumberOfCPUs();
 	const std::string threadsLabel = ", " + std::to_string(cores) + " threads";
-	const std::string fusionOnCores = "fusion" + threadsLabel, sgbmOnCores = "StereoSGBM 3-way" + threadsLabel;
+	const std::string fusionOnCores = "fusion" + threadsLabel, sgbmOnCores = kSgbmName + threadsLabel;
 	lvf::fusion::CLaserStereoFusion parallelFusion(f.options);
 	auto onCores = [&](auto run) {
 		cv::setNumThreads(cores);

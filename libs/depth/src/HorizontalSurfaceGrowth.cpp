@@ -236,10 +236,12 @@ class SurfaceWalk
 	}
 
 	/** Follows column u from the row after the start row until the plane
-	 * fails, after the rows `walked` already holds, and appends the rows
-	 * kept to `grown`. */
-	void column(int u, std::vector<PlaneRow> walked, std::vector<VisualPoint>& grown) const
+	 * fails, and appends the rows kept to `grown`; `atStart`: the start
+	 * row's own, where a sideways walk found the plane holding there. */
+	void column(int u, std::optional<PlaneRow> atStart, std::vector<VisualPoint>& grown) const
 	{
+		std::vector<PlaneRow> walked;
+		if (atStart) walked.push_back(*atStart);
 		for (int v = m_startRow + m_step;; v += m_step)
 		{
 			const auto row = holds(u, v);
@@ -280,7 +282,7 @@ void HorizontalSurfaceGrowth::walk(
 	const PlaneWindow plane(
 		left, right, g, fittedHeight(left, right, g, u, start, step, stride), o.windowHalfWidth, o.windowHalfHeight);
 	const SurfaceWalk surface(plane, evaluation, band, o, textureGate, stride, static_cast<int>(start.v), step);
-	surface.column(u, {}, grown);
+	surface.column(u, std::nullopt, grown);
 	if (!o.sideways) return;
 	// Along the start row, a grid column at a time each way, up to a column
 	// already followed; the last columns whose window reaches past the
@@ -298,7 +300,7 @@ void HorizontalSurfaceGrowth::walk(
 		for (size_t i = 0; i + size_t(straddling) < side.size(); i++)
 		{
 			walked.insert({side[i].first, step});
-			surface.column(side[i].first, {side[i].second}, grown);
+			surface.column(side[i].first, side[i].second, grown);
 		}
 	}
 }

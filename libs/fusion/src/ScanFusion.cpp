@@ -39,7 +39,7 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 {
 	// On a slanted face the points differ in range with bearing, so look at
 	// those nearest the bin's bearing: the min_points nearest, and any
-	// others within central_share of a bin of it.
+	// others nearer it than central_share of a bin.
 	std::sort(first, last, [](const Hit& a, const Hit& b) { return std::abs(a.offset) < std::abs(b.offset); });
 	auto chosenEnd = first + std::min<long>(m_options.minPoints, last - first);
 	while (chosenEnd != last && std::abs(chosenEnd->offset) < m_options.centralShare) chosenEnd++;
@@ -52,16 +52,13 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 		});
 	};
 	float nearest = std::numeric_limits<float>::infinity();
-	std::vector<float> chosen;
 	for (auto it = first; it != chosenEnd; ++it)
-	{
-		chosen.push_back(it->range);
 		if (m_options.rangeSupport <= 0 || supported(*it)) nearest = std::min(nearest, it->range);
-	}
 	if (std::isfinite(nearest)) return nearest;
 	// All of them isolated (points spread over the tolerance): their median.
-	std::nth_element(chosen.begin(), chosen.begin() + long(chosen.size() / 2), chosen.end());
-	return chosen[chosen.size() / 2];
+	const auto median = first + (chosenEnd - first) / 2;
+	std::nth_element(first, median, chosenEnd, [](const Hit& a, const Hit& b) { return a.range < b.range; });
+	return median->range;
 }
 
 std::vector<float> ScanFusion::visualRanges(

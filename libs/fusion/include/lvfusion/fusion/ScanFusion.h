@@ -41,7 +41,7 @@ class ScanFusion
 		 * 23 of 76. */
 		double centreSlack = 0.0;
 		/** The range is taken from the min_points points nearest the bin's
-		 * bearing and from any others within this fraction of a bin of it.
+		 * bearing and from any others nearer it than this fraction of a bin.
 		 * On real images a bin holds dozens of points, and the three nearest
 		 * its bearing are often not the obstacle's front. Measured with
 		 * range_support (recall / phantom rate, 0 -> 0.15): Middlebury
