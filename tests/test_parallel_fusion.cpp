@@ -55,6 +55,7 @@ void expectSameStats(const depth::DepthSearchStats& a, const depth::DepthSearchS
 	EXPECT_EQ(a.searchedPixels, b.searchedPixels);
 	EXPECT_EQ(a.skippedUntextured, b.skippedUntextured);
 	EXPECT_EQ(a.skippedEmptyRange, b.skippedEmptyRange);
+	EXPECT_EQ(a.skippedBehindNearer, b.skippedBehindNearer);
 	EXPECT_EQ(a.disparitiesTested, b.disparitiesTested);
 	EXPECT_EQ(a.accepted, b.accepted);
 	EXPECT_EQ(a.rejectedWeak, b.rejectedWeak);

@@ -260,12 +260,16 @@ void printStageMedians(int passes)
 	subpixel.depth.subpixelIterations = subpixel.depth.subpixelIterations > 0 ? 0 : 2;
 	auto memory = f.options;
 	memory.memory.maxTravel = memory.memory.maxTravel > 0 ? 0 : 1.5;
+	auto nearestFirst = f.options;
+	nearestFirst.depth.nearestFirstLevels = nearestFirst.depth.nearestFirstLevels > 0 ? 0 : 2;
 	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
 		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
 		{"fusion, full-res search", fullResolution},
 		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted},
 		{subpixel.depth.subpixelIterations > 0 ? "fusion, sub-pixel LK on" : "fusion, sub-pixel LK off", subpixel},
-		{memory.memory.maxTravel > 0 ? "fusion, point memory on" : "fusion, point memory off", memory}};
+		{memory.memory.maxTravel > 0 ? "fusion, point memory on" : "fusion, point memory off", memory},
+		{nearestFirst.depth.nearestFirstLevels > 0 ? "fusion, nearest first on" : "fusion, nearest first off",
+			nearestFirst}};
 	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
 	for (const auto& v : variants) fusions.emplace_back(v.second);
 	// Every method above on one thread; the fusion as configured and SGBM

@@ -20,13 +20,16 @@ mrpt::obs::CObservationImage::Ptr evaluationImage(
 {
 	cv::Mat3b picture = lvf::evaluation::drawEvaluationOverlay(r.left, r.evaluation);
 	// Searched and rejected (weak, ambiguous, ...): orange; found: yellow.
+	// Pixels left alone because something nearer was found on their
+	// bearing (nearest first) keep the model check's colour.
 	using lvf::depth::SearchOutcome;
 	if (!r.search.outcome.empty())
 		for (int v = 0; v < picture.rows; v++)
 			for (int u = 0; u < picture.cols; u++)
 			{
 				const auto o = static_cast<SearchOutcome>(r.search.outcome(v, u));
-				if (o != SearchOutcome::NotSearched && o != SearchOutcome::Accepted) picture(v, u) = {0, 140, 255};
+				if (o != SearchOutcome::NotSearched && o != SearchOutcome::BehindNearer && o != SearchOutcome::Accepted)
+					picture(v, u) = {0, 140, 255};
 			}
 	for (const auto& p : r.search.points)
 		cv::circle(picture, cv::Point(cvRound(p.u), cvRound(p.v)), 1, {0, 255, 255}, cv::FILLED);

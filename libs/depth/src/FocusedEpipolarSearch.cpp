@@ -2,15 +2,18 @@
 #include <lvfusion/depth/DisparityInterval.h>
 #include <lvfusion/depth/EpipolarScores.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
+#include <lvfusion/depth/NearestPerBearing.h>
 #include "AllowedColumns.h"
 #include "CoreWindowNcc.h"
 #include "SubpixelRefinement.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace lvf::depth
 {
@@ -26,6 +29,16 @@ constexpr double kOnTheFloor = 1e-3;
  * reads: a match nearer than this to it has the model's column on its own
  * peak's flank [px]. */
 constexpr int kModelFlank = 2;
+
+/** Two passes' points, each in row order, as one list in row order. */
+std::vector<VisualPoint> mergedByRow(const std::vector<VisualPoint>& a, const std::vector<VisualPoint>& b)
+{
+	std::vector<VisualPoint> out;
+	out.reserve(a.size() + b.size());
+	std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out),
+		[](const VisualPoint& p, const VisualPoint& q) { return p.v < q.v; });
+	return out;
+}
 }  // namespace
 
 DisparitySet FocusedEpipolarSearch::allowedDisparities(
@@ -270,6 +283,15 @@ struct FocusedEpipolarSearch::Frame
 	const SubpixelRefinement& refinement;
 };
 
+/** Which grid rows one pass searches, and what bounds it. */
+struct FocusedEpipolarSearch::Pass
+{
+	int firstRow, rowStep;
+	/** A later pass: what the passes before it found per bearing, which a
+	 * pixel is searched only in front of (nullptr: the first pass). */
+	const NearestPerBearing* nearer = nullptr;
+};
+
 /** What the search found on some of its grid rows. */
 struct FocusedEpipolarSearch::RowsFound
 {
@@ -278,8 +300,8 @@ struct FocusedEpipolarSearch::RowsFound
 };
 
 void FocusedEpipolarSearch::searchRows(
-	int firstRow, int endRow, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame, RowsFound& found,
-	cv::Mat1b& outcome) const
+	int firstRow, int endRow, const Pass& pass, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame,
+	RowsFound& found, cv::Mat1b& outcome) const
 {
 	const auto& evaluation = frame.evaluation;
 	const auto& g = frame.g;
@@ -290,7 +312,7 @@ void FocusedEpipolarSearch::searchRows(
 	const double fB = g.fB();
 	auto& stats = found.stats;
 	const int stride = m_options.pixelStride;
-	for (int v = firstRow; v < endRow; v += stride)
+	for (int v = firstRow; v < endRow; v += pass.rowStep)
 		for (int u = half; u < W - half; u += stride)
 		{
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
@@ -308,11 +330,22 @@ void FocusedEpipolarSearch::searchRows(
 			const Eigen::Vector3d ray = g.robotRay(u, v);
 			const bool floorModel = m_options.floorDisparityMargin > 0 && dModel > 0 &&
 				std::abs(C.z() + fB / dModel * ray.z() - frame.floorHeight) < kOnTheFloor;
-			const DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
+			DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
 			if (set.empty() || set.integerCount() == 0)
 			{
 				mark(SearchOutcome::EmptyRange, stats.skippedEmptyRange);
 				continue;
+			}
+			if (pass.nearer)
+			{
+				// Depth Z puts the point Z |ray_xy| from the camera, horizontally.
+				const double bound = pass.nearer->along(ray);
+				if (std::isfinite(bound)) set.intersect({fB * std::hypot(ray.x(), ray.y()) / bound, kInfinity});
+				if (set.empty() || set.integerCount() == 0)
+				{
+					mark(SearchOutcome::BehindNearer, stats.skippedBehindNearer);
+					continue;
+				}
 			}
 			stats.searchedPixels++;
 			const PixelQuery query{u, v, evaluation.leftMean(v, u), evaluation.leftStd(v, u), dModel, set, g};
@@ -366,6 +399,44 @@ void FocusedEpipolarSearch::searchRows(
 		}
 }
 
+FocusedEpipolarSearch::RowsFound FocusedEpipolarSearch::searchPass(
+	const Pass& pass, int endRow, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame,
+	cv::Mat1b& outcome) const
+{
+	// Each pixel is matched on its own: bands of the pass's rows on
+	// OpenCV's threads, each band with views of the levels that score for it
+	// alone; the bands' points joined in row order are the single thread's.
+	// Many narrow bands: the rows an obstacle fills cost several times the
+	// others (box room, 2 threads against 1: the search stage 1.59x as fast
+	// with 4 bands a thread, 1.66x with 16).
+	const lvf::common::RowBands bands(pass.firstRow, endRow, pass.rowStep, 16);
+	std::vector<RowsFound> found(static_cast<size_t>(bands.count()));
+	bands.forEach([&](int b, int firstRow, int bandEnd) {
+		std::unique_ptr<MatchingLevel> fullView, coarseView;
+		if (bands.count() > 1)
+		{
+			fullView = full.forAnotherThread();
+			if (coarse) coarseView = coarse->forAnotherThread();
+		}
+		MatchingLevel& f = fullView ? *fullView : full;
+		MatchingLevel* c = coarseView ? coarseView.get() : coarse;
+		// (One band scores with the levels themselves, which count on from
+		// an earlier pass.)
+		auto tested = [&] { return f.forward.evaluations() + (c ? c->forward.evaluations() : 0); };
+		const size_t before = tested();
+		RowsFound& rows = found[size_t(b)];
+		searchRows(firstRow, bandEnd, pass, f, c, frame, rows, outcome);
+		rows.stats.disparitiesTested = tested() - before;
+	});
+	RowsFound all;
+	for (const RowsFound& rows : found)
+	{
+		all.points.insert(all.points.end(), rows.points.begin(), rows.points.end());
+		all.stats += rows.stats;
+	}
+	return all;
+}
+
 FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const lvf::evaluation::ModelEvaluation& evaluation, int windowSize,
@@ -384,32 +455,26 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const SubpixelRefinement refinement(half, m_options.subpixelSigma);
 	const Frame frame{evaluation, g, band, floorHeight, half, m_options.textureGate(evaluation.noiseStd), refinement};
 
-	// Each pixel is matched on its own: bands of the grid's rows on
-	// OpenCV's threads, each band with views of the levels that score for it
-	// alone; the bands' points joined in row order are the single thread's.
-	// Many narrow bands: the rows an obstacle fills cost several times the
-	// others (box room, 2 threads against 1: the search stage 1.59x as fast
-	// with 4 bands a thread, 1.66x with 16).
-	const int stride = m_options.pixelStride;
-	const lvf::common::RowBands bands(half, H - half, stride, 16);
-	std::vector<RowsFound> found(static_cast<size_t>(bands.count()));
-	bands.forEach([&](int b, int firstRow, int endRow) {
-		std::unique_ptr<MatchingLevel> fullView, coarseView;
-		if (bands.count() > 1)
-		{
-			fullView = full.forAnotherThread();
-			if (coarse) coarseView = coarse->forAnotherThread();
-		}
-		MatchingLevel& f = fullView ? *fullView : full;
-		MatchingLevel* c = coarseView ? coarseView.get() : coarse.get();
-		RowsFound& rows = found[size_t(b)];
-		searchRows(firstRow, endRow, f, c, frame, rows, out.outcome);
-		rows.stats.disparitiesTested = f.forward.evaluations() + (c ? c->forward.evaluations() : 0);
-	});
-	for (const RowsFound& rows : found)
+	// Coarse rows first (nearest_first_levels = L): every 2^L-th grid row,
+	// then the rows halfway between, and so on down to every grid row; a
+	// pass after the first searches a pixel only in front of what the
+	// passes before it found on its bearing. L = 0: every grid row at once.
+	const int stride = m_options.pixelStride, levels = m_options.nearestFirstLevels;
+	for (int level = levels; level >= 0; level--)
 	{
-		out.points.insert(out.points.end(), rows.points.begin(), rows.points.end());
-		out.stats += rows.stats;
+		const int step = stride << level;
+		Pass pass{half, step};
+		std::optional<NearestPerBearing> nearest;
+		if (level < levels)
+		{
+			nearest.emplace(g.cameraCentre(), static_cast<size_t>(m_options.nearestFirstPoints));
+			for (const VisualPoint& p : out.points) nearest->add(p.robot);
+			nearest->finish();
+			pass = {half + step, 2 * step, &*nearest};
+		}
+		RowsFound found = searchPass(pass, H - half, full, coarse.get(), frame, out.outcome);
+		out.points = mergedByRow(out.points, found.points);
+		out.stats += found.stats;
 	}
 
 	// The grid's first and last columns, and as far beyond them as

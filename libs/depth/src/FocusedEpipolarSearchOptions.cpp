@@ -22,6 +22,8 @@ void FocusedEpipolarSearch::TOptions::loadFromConfigFile(
 	zMax = ini.real("z_max", zMax, zMin, 1000);
 	boundByBand = ini.flag("bound_by_height_band", boundByBand);
 	pixelStride = ini.integer("pixel_stride", pixelStride, 1, 32);
+	nearestFirstLevels = ini.integer("nearest_first_levels", nearestFirstLevels, 0, 4);
+	nearestFirstPoints = ini.integer("nearest_first_points", nearestFirstPoints, 1, 1000);
 	acceptNcc = ini.real("accept_ncc", acceptNcc, -1, 1);
 	uniquenessMargin = ini.real("uniqueness_margin", uniquenessMargin, 0, 2);
 	peakContext = ini.integer("peak_context", peakContext, 1, 64);
@@ -53,6 +55,8 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "z_max", zMax, "farthest depth searched [m]");
 	writeOption(c, s, "bound_by_height_band", boundByBand, "search only depths whose point lies in the robot height band");
 	writeOption(c, s, "pixel_stride", pixelStride, "search every n-th inconsistent pixel along rows and columns");
+	writeOption(c, s, "nearest_first_levels", nearestFirstLevels, "search every 2^L-th grid row first, then the rows halfway between, and so on; a later pass searches a pixel only in front of what earlier passes found on its bearing (the fused scan keeps a bearing's nearest obstacle); 0: every grid row in one pass");
+	writeOption(c, s, "nearest_first_points", nearestFirstPoints, "the points earlier passes must have found on a bearing before it is bounded, at the nearest_first_points-th nearest of them");
 	writeOption(c, s, "accept_ncc", acceptNcc, "a match must score at least this NCC [-1..1]");
 	writeOption(c, s, "uniqueness_margin", uniquenessMargin, "any other NCC peak must be lower by this much");
 	writeOption(c, s, "texture_noise_ratio", textureNoiseRatio, "search only windows whose std is at least this many times the image's noise: matching needs more texture than checking");
