@@ -7,6 +7,9 @@
 
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/simulation/WorldLoader.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/poses/CPose3DQuat.h>
 
 using namespace lvf::test;
 using lvf::simulation::CStereoLaserSimulator;
@@ -116,7 +119,7 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 {
 	// Frame k is spoiled in way k; frame 0 and the last one are good.
-	const auto log = writeLog("spoilt.rawlog", 9, [](size_t k, CStereoLaserSimulator::Frame& f) {
+	const auto log = writeLog("spoilt.rawlog", 10, [](size_t k, CStereoLaserSimulator::Frame& f) {
 		auto& s = *f.stereo;
 		auto& scan = *f.scan;
 		switch (k)
@@ -136,6 +139,14 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 			case 7:	 // a calibration so wrong that everything contradicts it
 				s.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));
 				break;
+			case 8:	 // the same, and the rig said to look up: no floor in view to judge
+			{
+				s.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));
+				const mrpt::poses::CPose3D up = mrpt::poses::CPose3D(s.cameraPose) +
+					mrpt::poses::CPose3D(0, 0, 0, 0, 0, mrpt::DEG2RAD(60.0));
+				s.cameraPose = mrpt::poses::CPose3DQuat(up);
+				break;
+			}
 			default: break;
 		}
 	});
@@ -149,14 +160,16 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"frame 5: scan LASER: has no rays (laser only)",
 		"frame 6: scan LASER has no valid range: no model to check, laser only",
 		"frame 7: the images contradict the laser model (",  // "N% of the floor consistent, ..."
+		// Not "100% of the floor consistent": too few floor pixels agree by default.
+		"frame 8: the images contradict the laser model (too little floor in view to judge, ",
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
 	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
-	EXPECT_NE(r.out.find("9 fused frames"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("10 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
-	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 9);
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 10);
 }
 
 TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)

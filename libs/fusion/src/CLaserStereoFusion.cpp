@@ -158,9 +158,13 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 		floorAgreement < m_options.minFloorAgreement;
 	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)
 	{
-		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" +
-			std::to_string(int(100 * floorAgreement)) + "% of the floor consistent, " + std::to_string(int(100 * inconsistent)) +
-			"% of the judged pixels inconsistent): stereo calibration suspect, laser only");
+		// Too few floor pixels count as agreeing (floorAgreement() is then
+		// 1): say so, rather than "100% of the floor consistent".
+		const std::string floor = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels
+			? std::to_string(int(100 * floorAgreement)) + "% of the floor consistent"
+			: "too little floor in view to judge";
+		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" + floor + ", " +
+			std::to_string(int(100 * inconsistent)) + "% of the judged pixels inconsistent): stereo calibration suspect, laser only");
 		fallback.warnings.insert(fallback.warnings.begin(), r.warnings.begin(), r.warnings.end());
 		fallback.segments = std::move(r.segments);
 		fallback.model = std::move(r.model);
