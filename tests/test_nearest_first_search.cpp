@@ -52,6 +52,21 @@ TEST(NearestPerBearing, BoundsABearingAtItsKthNearestPointWhateverTheHeight)
 	EXPECT_TRUE(std::isinf(nearest.along(ray(-40.1, 0.2))));
 }
 
+TEST(NearestPerBearing, PointsAddedLaterTightenTheBoundAtTheNextFinish)
+{
+	depth::NearestPerBearing nearest(kCamera, 2);
+	EXPECT_TRUE(std::isinf(nearest.along(ray(30.1, 0.2))));
+	nearest.add(fromCamera(3.0, 30.1, 0.5));
+	nearest.add(fromCamera(2.0, 30.1, 0.5));
+	nearest.finish();
+	EXPECT_NEAR(nearest.along(ray(30.1, 0.2)), 3.0, 1e-9);
+	// A later pass's point: the old bound stands until finish().
+	nearest.add(fromCamera(1.0, 30.1, 0.5));
+	EXPECT_NEAR(nearest.along(ray(30.1, 0.2)), 3.0, 1e-9);
+	nearest.finish();
+	EXPECT_NEAR(nearest.along(ray(30.1, 0.2)), 2.0, 1e-9);
+}
+
 TEST(NearestPerBearing, BearingsAQuarterDegreeApartAreBoundedApart)
 {
 	depth::NearestPerBearing nearest(kCamera, 1);

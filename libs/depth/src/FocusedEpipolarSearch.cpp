@@ -16,7 +16,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <optional>
 
 namespace lvf::depth
 {
@@ -277,19 +276,18 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	// pass after the first searches a pixel only in front of what the
 	// passes before it found on its bearing. L = 0: every grid row at once.
 	const int stride = m_options.pixelStride, levels = m_options.nearestFirstLevels;
+	NearestPerBearing nearest(g.cameraCentre(), static_cast<size_t>(m_options.nearestFirstPoints));
 	for (int level = levels; level >= 0; level--)
 	{
 		const int step = stride << level;
-		Pass pass{half, step};
-		std::optional<NearestPerBearing> nearest;
-		if (level < levels)
-		{
-			nearest.emplace(g.cameraCentre(), static_cast<size_t>(m_options.nearestFirstPoints));
-			for (const VisualPoint& p : out.points) nearest->add(p.robot);
-			nearest->finish();
-			pass = {half + step, 2 * step, &*nearest};
-		}
+		const Pass pass = level == levels ? Pass{half, step} : Pass{half + step, 2 * step, &nearest};
 		RowsFound found = searchPass(pass, H - half, full, coarse.get(), frame, out.outcome);
+		if (level > 0)
+		{
+			// Each pass's points join the bounds of the passes after it.
+			for (const VisualPoint& p : found.points) nearest.add(p.robot);
+			nearest.finish();
+		}
 		out.points = mergedByRow(out.points, found.points);
 		out.stats += found.stats;
 	}

@@ -28,7 +28,10 @@ class NearestPerBearing
 	 * enough-th nearest distance: fewer may be a lone mismatch, or a far
 	 * surface that needs every point the rows between can add. */
 	NearestPerBearing(const Eigen::Vector3d& camera, size_t enough)
-		: m_camera(camera), m_enough(std::max<size_t>(enough, 1)), m_distances(binCount())
+		: m_camera(camera),
+		  m_enough(std::max<size_t>(enough, 1)),
+		  m_distances(binCount()),
+		  m_bound(binCount(), std::numeric_limits<double>::infinity())
 	{
 	}
 
@@ -39,10 +42,10 @@ class NearestPerBearing
 		m_distances[bin(std::atan2(dy, dx))].push_back(std::hypot(dx, dy));
 	}
 
-	/** Once every point is added: each bearing's bound. */
+	/** After adding points: each bearing's bound from all points so far
+	 * (until then, the bounds of the last call; none at first). */
 	void finish()
 	{
-		m_bound.assign(binCount(), std::numeric_limits<double>::infinity());
 		for (size_t b = 0; b < m_distances.size(); b++)
 		{
 			auto& d = m_distances[b];
