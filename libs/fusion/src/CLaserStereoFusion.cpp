@@ -154,13 +154,13 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 	const CalibrationEvidence evidence = calibrationEvidence(
 		r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, gridFirst, gridStride);
 	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
-	const bool floorContradicted = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels &&
-		floorAgreement < m_options.minFloorAgreement;
+	const bool floorJudgeable = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels;
+	const bool floorContradicted = floorJudgeable && floorAgreement < m_options.minFloorAgreement;
 	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)
 	{
-		// Too few floor pixels count as agreeing (floorAgreement() is then
-		// 1): say so, rather than "100% of the floor consistent".
-		const std::string floor = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels
+		// Too few floor pixels are no evidence (and none at all reads as
+		// 100% agreeing): say so, rather than give their share.
+		const std::string floor = floorJudgeable
 			? std::to_string(int(100 * floorAgreement)) + "% of the floor consistent"
 			: "too little floor in view to judge";
 		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" + floor + ", " +
