@@ -212,7 +212,7 @@ int run(int argc, char** argv)
 			"  fusion %.2f ms per frame (%s)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
 			in.unpairedScans, badFrames, fallbacks, timer.Tac(), timeSum / double(in.frames.size()),
-			lvf::common::ThreadsOption::describe().c_str(), noOdometry.c_str());
+			threads.describe().c_str(), noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
 				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "
