@@ -12,6 +12,8 @@
 #include <mrpt/poses/CPose3DQuat.h>
 #include <opencv2/core/utility.hpp>
 
+#include <functional>
+
 using namespace lvf::test;
 using lvf::simulation::CStereoLaserSimulator;
 
@@ -22,10 +24,13 @@ class LvfFuseCli : public CliTest
    protected:
 	RunResult fuse(const std::string& args) const { return run(LVF_FUSE_BIN, args); }
 
+	/** Observations a frame also records, besides its scan and stereo pair. */
+	using MoreSensors = std::function<void(const CStereoLaserSimulator::Frame&, std::vector<mrpt::obs::CObservation::Ptr>&)>;
+
 	/** A rawlog of the two-cube scene, `frames` poses along x, each frame
-	 * passed through `spoil(k, frame)` first. */
+	 * passed through `spoil(k, frame)` first (and `more` adding to it). */
 	template <typename Spoil>
-	fs::path writeLog(const std::string& name, size_t frames, Spoil&& spoil) const
+	fs::path writeLog(const std::string& name, size_t frames, Spoil&& spoil, const MoreSensors& more = {}) const
 	{
 		auto world = lvf::simulation::loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/two_cubes.yaml");
 		world.path.clear();
@@ -37,7 +42,9 @@ class LvfFuseCli : public CliTest
 		{
 			auto f = sim.simulateNextFrame(false);
 			spoil(k, f);
-			out.append({f.timestamp, f.odometry, {f.scan, f.stereo}});
+			std::vector<mrpt::obs::CObservation::Ptr> observations{f.scan, f.stereo};
+			if (more) more(f, observations);
+			out.append({f.timestamp, f.odometry, observations});
 		}
 		return path;
 	}
@@ -188,4 +195,47 @@ TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)
 	const auto wide = fuse("--input " + log.string() + " --max-time-diff 0.6 --outdir wide");
 	ASSERT_EQ(wide.status, 0) << wide.err;
 	EXPECT_NE(wide.out.find("5 fused frames (0 unpaired scans"), std::string::npos) << wide.out;
+}
+
+TEST_F(LvfFuseCli, WithSeveralLasersOrCamerasTheUserChoosesByLabel)
+{
+	// Each frame also holds a rear laser's scan and a second camera's pair
+	// (copies under other labels): fusing those with the front ones would be
+	// wrong without a word, so the user is asked which.
+	const auto log = writeLog("four_sensors.rawlog", 3, [](size_t, CStereoLaserSimulator::Frame&) {},
+		[](const CStereoLaserSimulator::Frame& f, std::vector<mrpt::obs::CObservation::Ptr>& more) {
+			auto rear = std::make_shared<mrpt::obs::CObservation2DRangeScan>(*f.scan);
+			rear->sensorLabel = "LASER_REAR";
+			auto second = std::make_shared<mrpt::obs::CObservationStereoImages>(*f.stereo);
+			second->sensorLabel = "STEREO_2";
+			more.push_back(rear);
+			more.push_back(second);
+		});
+	const std::string input = "--input " + log.string();
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{"", "four_sensors.rawlog: 2D scans from 2 sensors (LASER, LASER_REAR): choose one with --laser-label"},
+		{" --laser-label LASER", "four_sensors.rawlog: stereo pairs from 2 sensors (STEREO, STEREO_2): choose one with --stereo-label"},
+		{" --laser-label SICK --stereo-label STEREO", "four_sensors.rawlog: no 2D scans labelled 'SICK' (labels: LASER, LASER_REAR)"},
+		{" --laser-label LASER --stereo-label BUMBLEBEE", "four_sensors.rawlog: no stereo pairs labelled 'BUMBLEBEE' (labels: STEREO, STEREO_2)"},
+	};
+	for (const auto& [args, expected] : cases)
+	{
+		const auto r = fuse(input + args + " --outdir out");
+		EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+		EXPECT_EQ(countLines(r.err), 1u) << args << "\n" << r.err;
+		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
+	}
+	// Chosen: the front laser with either camera fuses every frame, as the
+	// log of the front sensors alone does.
+	const auto front = writeLog("front.rawlog", 3, [](size_t, CStereoLaserSimulator::Frame&) {});
+	const auto alone = fuse("--input " + front.string() + " --outdir alone");
+	ASSERT_EQ(alone.status, 0) << alone.err;
+	for (const char* camera : {"STEREO", "STEREO_2"})
+	{
+		const auto r = fuse(input + " --laser-label LASER --stereo-label " + camera + " --outdir " + camera);
+		ASSERT_EQ(r.status, 0) << r.err;
+		EXPECT_NE(r.out.find("3 scans, 3 stereo pairs, 3 fused frames (0 unpaired scans"), std::string::npos) << r.out;
+		EXPECT_EQ(slurp(m_dir / camera / "four_sensors_bearings.csv"), slurp(m_dir / "alone/front_bearings.csv"));
+	}
 }

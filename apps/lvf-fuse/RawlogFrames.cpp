@@ -6,7 +6,13 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
+#include <lvfusion/common/InputError.h>
+#include <mrpt/core/format.h>
+
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <set>
 
 namespace lvf::apps
 {
@@ -18,14 +24,42 @@ struct Stamped
 	double t;
 	mrpt::obs::CObservation::Ptr obs;
 };
+
+/** The observations of the chosen sensor (all of them if the log has only
+ * one); `kind` and `option` name them in the errors. */
+std::vector<Stamped> ofSensor(
+	const std::vector<Stamped>& all, const std::string& chosen, const std::string& path, const std::string& kind,
+	const std::string& option)
+{
+	std::set<std::string> labels;
+	for (const auto& o : all) labels.insert(o.obs->sensorLabel);
+	std::string found;
+	for (const auto& label : labels) found += (found.empty() ? "" : ", ") + (label.empty() ? "(no label)" : label);
+	if (chosen.empty())
+	{
+		if (labels.size() > 1)
+			throw lvf::common::InputError(path, "", mrpt::format(
+				"%s from %zu sensors (%s): choose one with %s", kind.c_str(), labels.size(), found.c_str(),
+				option.c_str()));
+		return all;
+	}
+	if (!labels.count(chosen))
+		throw lvf::common::InputError(path, "", mrpt::format(
+			"no %s labelled '%s' (%s)", kind.c_str(), chosen.c_str(),
+			labels.empty() ? "there are none" : ("labels: " + found).c_str()));
+	std::vector<Stamped> out;
+	for (const auto& o : all)
+		if (o.obs->sensorLabel == chosen) out.push_back(o);
+	return out;
+}
 }  // namespace
 
-RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff)
+RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const SensorLabels& labels)
 {
 	RawlogFrames out;
 	out.entries = lvf::common::readRawlogEntries(path);
 
-	std::vector<Stamped> scans, stereos;
+	std::vector<Stamped> allScans, allStereos;
 	std::vector<std::pair<double, mrpt::poses::CPose2D>> odometry;	// time, pose
 	mrpt::poses::CPose2D dead;	// accumulated action increments (sf layout)
 	std::vector<mrpt::poses::CPose2D> poseAtEntry(out.entries.size());
@@ -33,9 +67,9 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff)
 		const double t = mrpt::Clock::toDouble(o->timestamp);
 		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o);
 			s && s->sensorLabel != "FUSED")
-			scans.push_back({entry, t, o});
+			allScans.push_back({entry, t, o});
 		else if (std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o))
-			stereos.push_back({entry, t, o});
+			allStereos.push_back({entry, t, o});
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o))
 			odometry.emplace_back(t, odo->odometry);
 	};
@@ -58,14 +92,24 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff)
 		poseAtEntry[i] = dead;
 	}
 	if (!odometry.empty()) out.hasOdometry = true;
+	const auto scans = ofSensor(allScans, labels.laser, path, "2D scans", "--laser-label");
+	auto stereos = ofSensor(allStereos, labels.stereo, path, "stereo pairs", "--stereo-label");
 	out.scans = scans.size();
 	out.stereoPairs = stereos.size();
 
+	// In time order (stable: the first in the file of equal times), so that
+	// a scan's nearest pair and latest odometry are a binary search away
+	// (a real log holds tens of thousands of each).
+	auto byTime = [](const auto& a, const auto& b) { return a.t < b.t; };
+	std::stable_sort(stereos.begin(), stereos.end(), byTime);
+	std::stable_sort(odometry.begin(), odometry.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 	for (const auto& s : scans)
 	{
+		// The pair nearest in time; of two as near, the earlier.
 		const Stamped* best = nullptr;
-		for (const auto& st : stereos)
-			if (!best || std::abs(st.t - s.t) < std::abs(best->t - s.t)) best = &st;
+		auto after = std::lower_bound(stereos.begin(), stereos.end(), s.t, [](const Stamped& st, double t) { return st.t < t; });
+		if (after != stereos.end()) best = &*after;
+		if (after != stereos.begin() && (!best || s.t - std::prev(after)->t <= best->t - s.t)) best = &*std::prev(after);
 		if (!best || std::abs(best->t - s.t) > maxTimeDiff)
 		{
 			out.unpairedScans++;
@@ -78,8 +122,10 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff)
 		f.stereo = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(best->obs);
 		f.stereoDelay = best->t - s.t;
 		f.odometry = poseAtEntry[s.entry];
-		for (const auto& [t, pose] : odometry)	// latest reading not after the scan
-			if (t <= s.t + 1e-6) f.odometry = pose;
+		// The latest odometry reading not after the scan.
+		auto next = std::upper_bound(odometry.begin(), odometry.end(), s.t + 1e-6,
+			[](double t, const auto& reading) { return t < reading.first; });
+		if (next != odometry.begin()) f.odometry = std::prev(next)->second;
 		out.frames.push_back(f);
 	}
 	return out;

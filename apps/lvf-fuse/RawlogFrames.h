@@ -35,9 +35,17 @@ struct RawlogFrames
 	bool sensoryFrames = false;	 //!< actions/sensory-frames layout
 };
 
-/** Loads `path` and pairs scans (any CObservation2DRangeScan not labelled
+/** Which sensors to fuse, by sensorLabel; empty: the log's only one. */
+struct SensorLabels
+{
+	std::string laser, stereo;
+};
+
+/** Loads `path` and pairs scans (CObservation2DRangeScan, not labelled
  * FUSED) with stereo pairs within `maxTimeDiff` seconds. Throws InputError
- * naming the record if the file is not a readable rawlog. */
-RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff);
+ * naming the record if the file is not a readable rawlog, and naming the
+ * labels found if a chosen label is not among them or, with none chosen,
+ * the log holds scans (or stereo pairs) of several sensors. */
+RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const SensorLabels& labels = {});
 
 }  // namespace lvf::apps

@@ -111,6 +111,8 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argConfig("c", "config", "Fusion configuration, MRPT INI; keys not given keep their defaults (--dump-config lists them all)", false, "", "FILE.ini", cmd);
 	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Folder for grids, CSV and (by default) the output rawlog (default: lvf-out)", false, "lvf-out", "DIR", cmd);
 	TCLAP::ValueArg<std::string> argTruth("t", "truth", "Truth scans (CSV) to score against (default: IN_truth_scans.csv if it exists)", false, "", "FILE.csv", cmd);
+	TCLAP::ValueArg<std::string> argLaserLabel("", "laser-label", "Fuse the 2D scans of this sensor (sensorLabel; default: the log's only laser)", false, "", "LABEL", cmd);
+	TCLAP::ValueArg<std::string> argStereoLabel("", "stereo-label", "With the stereo pairs of this sensor (sensorLabel; default: the log's only stereo camera)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
 	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m] (default 0.05)", false, 0.05, "M", cmd);
 	lvf::common::ThreadsOption threads(cmd);
@@ -137,7 +139,8 @@ int run(int argc, char** argv)
 	const auto truth = truthPath.empty() ? std::vector<lvf::metrics::TruthScan>{}
 										 : lvf::metrics::readTruthScans(truthPath);
 	mrpt::system::CTicTac timer;
-	auto in = lvf::apps::loadRawlogFrames(input, argMaxDt.getValue());
+	auto in = lvf::apps::loadRawlogFrames(
+		input, argMaxDt.getValue(), {argLaserLabel.getValue(), argStereoLabel.getValue()});
 	if (in.frames.empty())
 		throw InputError(input, "", mrpt::format(
 			"no laser scan has a stereo pair within %.3f s (%zu scans, %zu stereo pairs)",
