@@ -1,10 +1,13 @@
 // lvf-navigate as a user runs it: bad input is one line and exit status 2
 // with nothing written; scenarios that cannot succeed are reported as such
 // (exit status 4) with their metrics line; a short laser-only run writes
-// every output the issue lists, the rawlog readable by MRPT's tools.
+// every output the issue lists, the rawlog readable by MRPT's tools, the
+// poses adding up to the path it reports.
 
 #include "CliTestSupport.h"
 #include "TestWorlds.h"
+
+#include <lvfusion/metrics/PoseTrajectory.h>
 
 using lvf::test::CliTest;
 using lvf::test::RunResult;
@@ -79,8 +82,21 @@ TEST_F(LvfNavigateCli, LaserOnlyBoxRoomRunWritesEveryOutput)
 	EXPECT_NE(r.out.find("outcome=collision"), std::string::npos) << r.out;
 	EXPECT_NE(r.out.find("float_"), std::string::npos) << r.out;
 	const auto out = m_dir / "out";
-	for (const char* f : {"box_room_trajectory.png", "box_room_run.rawlog", "box_room_metrics.txt"})
+	for (const char* f : {"box_room_trajectory.png", "box_room_poses.txt", "box_room_run.rawlog", "box_room_metrics.txt"})
 		EXPECT_GT(fs::file_size(out / f), 0u) << f;
+	// The poses: one a control step (0.1 s) from the start, whose steps add
+	// up to the metrics line's path (a collision ends the path at its step).
+	const auto poses = lvf::metrics::readPoseFile((out / "box_room_poses.txt").string());
+	ASSERT_GT(poses.size(), 10u);
+	double path = 0;
+	for (size_t k = 1; k < poses.size(); k++)
+	{
+		EXPECT_NEAR(poses[k].timestamp - poses[k - 1].timestamp, 0.1, 1e-6);
+		path += poses[k].pose.distanceTo(poses[k - 1].pose);
+	}
+	const size_t at = r.out.find("path=");
+	ASSERT_NE(at, std::string::npos) << r.out;
+	EXPECT_NEAR(path, std::stod(r.out.substr(at + 5)), 0.005);
 	bool navlog = false;
 	for (const auto& e : fs::directory_iterator(out / "box_room_navlog"))
 		navlog |= e.path().extension() == ".reactivenavlog" && fs::file_size(e.path()) > 0;

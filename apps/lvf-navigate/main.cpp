@@ -11,6 +11,7 @@
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
+#include <lvfusion/metrics/PoseTrajectory.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
 #include <lvfusion/navigation/NavigatorConfig.h>
@@ -158,11 +159,17 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 		"%s: %s %s %s: %s", kApp.c_str(), name.c_str(), setup.method.c_str(),
 		nav::sensingName(setup.sensing), m.summary().c_str());
 	lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
+	// The true pose of every control cycle, stamped as the run's rawlog is.
+	std::vector<lvf::metrics::StampedPose> poses;
+	for (size_t k = 0; k < m.trajectory.size(); k++)
+		poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
+			mrpt::poses::CPose2D(m.trajectory[k])});
+	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
 	std::ofstream(files.stage(name + "_metrics.txt")) << line << "\n" << m.detail << "\n";
 	files.commit();
 	std::cout << line << "\n";
 	if (!quiet)
-		std::cout << "  " << m.detail << "\n  wrote " << name << "_{trajectory.png,run.rawlog,metrics.txt}, "
+		std::cout << "  " << m.detail << "\n  wrote " << name << "_{trajectory.png,poses.txt,run.rawlog,metrics.txt}, "
 				  << navlog << "/ in " << files.outputDir() << "\n";
 	return nav::outcomeExitStatus(m.outcome);
 }
