@@ -7,6 +7,7 @@
 #   usage: scripts/fusion-ab.sh OLD_LVF_FUSE NEW_LVF_FUSE [WORKDIR]
 #   LVF_AB_ROOMS="201 202 ..."   seeded rooms (default 201-230, never tuned on)
 #   LVF_AB_CONFIG=FILE.ini       --config for both binaries
+#   LVF_BUILD_DIR=dir            where this checkout was built (default build)
 # Inputs: the seeded rooms (made once with this checkout's lvf-simulate), the
 # three shipped samples, and Middlebury Motorcycle and Recycle when
 # ../shared/data is there. One thread each (the outputs are the same on any
@@ -16,7 +17,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 old=$(realpath "$1"); new=$(realpath "$2"); work=${3:-lvf-ab}
 for b in "$old" "$new"; do [ -x "$b" ] || { echo "fusion-ab: $b: not an executable" >&2; exit 2; }; done
-bin=$root/build/bin
+bin=$root/${LVF_BUILD_DIR:-build}/bin  # lvf-simulate, lvf-import-middlebury (as bootstrap.sh builds them)
+rm -rf "$work/old" "$work/new"  # the inputs are kept: made once, reused
 mkdir -p "$work/inputs"
 inputs=()
 for s in ${LVF_AB_ROOMS:-$(seq 201 230)}; do
