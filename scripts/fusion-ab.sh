@@ -53,8 +53,16 @@ echo "fusion-ab: ${#inputs[@]} inputs, $differ with different fused rawlogs"
 # (recall and phantom rate times their counts), and the search's mean time.
 for side in old new; do
   awk -F, -v side=$side '
-    FNR == 1 { n = split(FILENAME, parts, "/"); set = parts[n - 1]; if (set ~ /^random_/) set = "seeded rooms"; next }
-    { v[set] += $24; h[set] += $25; r[set] += int($26 * $25 + 0.5); p[set] += int($27 * $24 + 0.5); t[set] += $21; f[set]++ }
+    FNR == 1 {
+      n = split(FILENAME, parts, "/"); set = parts[n - 1]; if (set ~ /^random_/) set = "seeded rooms"
+      for (i = 1; i <= NF; i++) col[$i] = i  # by name: the CSV may gain columns
+      next
+    }
+    {
+      views = $col["in_view"]; hidden = $col["hidden"]
+      v[set] += views; h[set] += hidden; t[set] += $col["t_search_ms"]; f[set]++
+      r[set] += int($col["recall"] * hidden + 0.5); p[set] += int($col["phantom_rate"] * views + 0.5)
+    }
     END { for (s in f) printf "%s %-14s recalled %5d of %5d hidden, %4d phantom of %5d in view, search %.2f ms a frame\n",
           side, s, r[s], h[s], p[s], v[s], t[s] / f[s] }' "$work/$side"/*/*_frames.csv | sort -k2
 done
