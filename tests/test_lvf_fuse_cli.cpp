@@ -239,3 +239,54 @@ TEST_F(LvfFuseCli, WithSeveralLasersOrCamerasTheUserChoosesByLabel)
 		EXPECT_EQ(slurp(m_dir / camera / "four_sensors_bearings.csv"), slurp(m_dir / "alone/front_bearings.csv"));
 	}
 }
+
+TEST_F(LvfFuseCli, ImagesKeptAsFilesBesideTheLogAreReadAndStayFiles)
+{
+	// Real logs keep their camera images as files in NAME_Images beside
+	// NAME.rawlog (rawlog-grabber, rawlog-edit --externalize); the
+	// observations hold only the files' names.
+	const auto embedded = writeLog("embedded.rawlog", 4, [](size_t, CStereoLaserSimulator::Frame&) {});
+	fs::create_directories(m_dir / "logs");
+	const auto externalize = run(LVF_RAWLOG_EDIT, "--externalize -i embedded.rawlog -o logs/stored.rawlog");
+	ASSERT_EQ(externalize.status, 0) << externalize.err;
+	const fs::path images = m_dir / "logs/stored_Images";
+	std::vector<fs::path> files;  // img_STEREO_<time>_{left,right}.png: frame by frame
+	for (const auto& e : fs::directory_iterator(images)) files.push_back(e.path());
+	std::sort(files.begin(), files.end());
+	ASSERT_EQ(files.size(), 8u);
+
+	const auto inMemory = fuse("--input embedded.rawlog --outdir a");
+	const auto asFiles = fuse("--input logs/stored.rawlog --outdir b");
+	ASSERT_EQ(inMemory.status, 0) << inMemory.err;
+	ASSERT_EQ(asFiles.status, 0) << asFiles.err;
+	EXPECT_EQ(asFiles.err, "");
+	EXPECT_NE(asFiles.out.find("8 images read from logs/stored_Images"), std::string::npos) << asFiles.out;
+	EXPECT_EQ(slurp(m_dir / "b/stored_bearings.csv"), slurp(m_dir / "a/embedded_bearings.csv"));
+
+	// The output names them by absolute path, so MRPT's own tools find them
+	// from outside its folder (MRPT 2.5.8 would look in "bImages" for
+	// names relative to b/): rawlog-edit folds them into a self-contained
+	// copy, which fuses to the same bearings.
+	fs::create_directories(m_dir / "elsewhere");
+	const auto fold = run(LVF_RAWLOG_EDIT, "--de-externalize -i b/stored_fused.rawlog -o elsewhere/self.rawlog");
+	ASSERT_EQ(fold.status, 0) << fold.err;
+	const auto self = fuse("--input elsewhere/self.rawlog --outdir c");
+	ASSERT_EQ(self.status, 0) << self.err;
+	EXPECT_EQ(slurp(m_dir / "c/self_bearings.csv"), slurp(m_dir / "a/embedded_bearings.csv"));
+
+	// A missing file and one that is no image: that frame on the laser
+	// alone, one warning naming the file; the other frames fused.
+	fs::remove(files[3]);					   // frame 1's right image
+	std::ofstream(files[4]) << "not a PNG";	   // frame 2's left image
+	const auto spoilt = fuse("--input logs/stored.rawlog --outdir d");
+	ASSERT_EQ(spoilt.status, 0) << spoilt.err;
+	EXPECT_EQ(countLines(spoilt.err), 2u) << spoilt.err;
+	for (const auto& [frame, which, file] : {std::tuple{1, "right", files[3]}, std::tuple{2, "left", files[4]}})
+		EXPECT_NE(spoilt.err.find("lvf-fuse: warning: logs/stored.rawlog: frame " + std::to_string(frame) + ": " +
+					  which + " image: cannot read its file " + file.string() + " (laser only)"),
+			std::string::npos)
+			<< spoilt.err;
+	EXPECT_NE(spoilt.out.find("4 fused frames (0 unpaired scans, 2 bad frames, 2 frames on the laser alone)"),
+		std::string::npos)
+		<< spoilt.out;
+}

@@ -1,5 +1,6 @@
 #include "RawlogFrames.h"
 
+#include <lvfusion/common/ExternalImages.h>
 #include <lvfusion/common/RawlogReader.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -58,6 +59,8 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const
 {
 	RawlogFrames out;
 	out.entries = lvf::common::readRawlogEntries(path);
+	out.externalImages = lvf::common::anchorExternalImages(out.entries, path);
+	out.externalImagesDirectory = lvf::common::externalImagesDirectory(path);
 
 	std::vector<Stamped> allScans, allStereos;
 	std::vector<std::pair<double, mrpt::poses::CPose2D>> odometry;	// time, pose

@@ -33,6 +33,10 @@ struct RawlogFrames
 	size_t scans = 0, stereoPairs = 0, unpairedScans = 0;
 	bool hasOdometry = false;
 	bool sensoryFrames = false;	 //!< actions/sensory-frames layout
+	/** Images kept as files beside the log (ExternalImages.h), each now
+	 * named by its absolute path; loaded only when a frame reads them. */
+	size_t externalImages = 0;
+	std::string externalImagesDirectory;  //!< where they are
 };
 
 /** Which sensors to fuse, by sensorLabel; empty: the log's only one. */
@@ -41,7 +45,7 @@ struct SensorLabels
 	std::string laser, stereo;
 };
 
-/** Loads `path` and pairs scans (CObservation2DRangeScan, not labelled
+/** Loads `path` (pointing its external images at their files) and pairs scans (CObservation2DRangeScan, not labelled
  * FUSED) with stereo pairs within `maxTimeDiff` seconds. Throws InputError
  * naming the record if the file is not a readable rawlog, and naming the
  * labels found if a chosen label is not among them or, with none chosen,

@@ -166,7 +166,7 @@ int run(int argc, char** argv)
 	const bool quiet = argQuiet.getValue();
 	ResultsAfterEntry additions;
 	lvf::metrics::FusionScore total;
-	size_t badFrames = 0, fallbacks = 0, scored = 0;
+	size_t badFrames = 0, laserAlone = 0, scored = 0;
 	double timeSum = 0;
 	lvf::common::ProgressBar progress("fusing", in.frames.size());
 	for (size_t k = 0; k < in.frames.size(); k++)
@@ -186,7 +186,7 @@ int run(int argc, char** argv)
 			badFrames++;
 		}
 		for (const auto& w : r.warnings) std::cerr << kApp << ": warning: " << w << std::endl;
-		fallbacks += r.fellBackToLaser;
+		laserAlone += r.fellBackToLaser;  // bad frames, a suspect calibration, no valid range
 		timeSum += r.times.total();
 
 		const auto frameTruth = scoreAgainstTruth(truth, f, r, options);
@@ -195,6 +195,10 @@ int run(int argc, char** argv)
 		auto& after = additions[std::max(f.scanEntry, f.stereoEntry)];
 		after.push_back(r.fused);
 		if (!r.left.empty()) after.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
+		// A real log's images stay on disk until a frame reads them; a
+		// long log's would fill the memory if they stayed loaded.
+		f.stereo->imageLeft.unload();
+		f.stereo->imageRight.unload();
 		if (!quiet) progress.update(k + 1);
 	}
 
@@ -211,10 +215,10 @@ int run(int argc, char** argv)
 				(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
 		std::cout << mrpt::format(
 			"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
-			"%zu bad frames, %zu calibration fall-backs) in %.2f s\n"
+			"%zu bad frames, %zu frames on the laser alone) in %.2f s\n"
 			"  fusion %.2f ms per frame (%s)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
-			in.unpairedScans, badFrames, fallbacks, timer.Tac(), timeSum / double(in.frames.size()),
+			in.unpairedScans, badFrames, laserAlone, timer.Tac(), timeSum / double(in.frames.size()),
 			threads.describe().c_str(), noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
@@ -222,6 +226,9 @@ int run(int argc, char** argv)
 				"of %zu in view, median range error %.3f m (hidden %.3f m)\n",
 				truthPath.c_str(), scored, total.recall(), total.hidden, total.phantomRate(),
 				total.inView, total.rangeErrorMedian, total.hiddenRangeErrorMedian);
+		if (in.externalImages)
+			std::cout << "  " << in.externalImages << " images read from " << in.externalImagesDirectory
+					  << " (the output rawlog names them by absolute path)\n";
 		std::cout << "  wrote " << (outputFile ? argOutput.getValue() : files.finalPath(outName))
 				  << ", " << name << "_{laser,fused}.gridmap.gz, " << name << "_grids.png, "
 				  << name << "_{frames,bearings}.csv in " << files.outputDir() << "\n";

@@ -11,9 +11,15 @@ namespace lvf::common
 {
 namespace
 {
+/** The line that says what went wrong: an MRPT exception's text opens
+ * with a "==== MRPT exception ====" banner, then "Message: ...", then
+ * where and a call stack. */
 std::string firstLine(const std::string& s)
 {
-	const auto start = s.find_first_not_of("\n =");  // MRPT banners
+	const std::string label = "Message:";
+	const auto message = s.find(label);
+	const auto start = message != std::string::npos ? s.find_first_not_of(' ', message + label.size())
+													: s.find_first_not_of("\n =");
 	const auto from = start == std::string::npos ? 0 : start;
 	const auto end = s.find('\n', from);
 	return s.substr(from, end == std::string::npos ? std::string::npos : end - from);

@@ -52,6 +52,22 @@ cv::Mat distortionVector(const mrpt::img::TCamera& c)
 	return cv::Mat(1, 5, CV_64F, const_cast<double*>(c.dist.data())).clone();
 }
 
+/** An image kept in a file beside the rawlog (MRPT's external storage,
+ * loaded on first use) read now, so that a missing or unreadable file is
+ * this frame's one error line rather than an exception from inside MRPT. */
+void loadIfExternal(const mrpt::img::CImage& image, const std::string& record, const std::string& which)
+{
+	if (!image.isExternallyStored()) return;
+	try
+	{
+		image.forceLoad();
+	}
+	catch (const std::exception&)
+	{
+		throw InputError(record, which, "cannot read its file " + image.getExternalStorageFileAbsolutePath());
+	}
+}
+
 }  // namespace
 
 cv::Mat1b toGrey(const mrpt::img::CImage& image)
@@ -66,6 +82,8 @@ void RectifiedStereo::prepare(
 {
 	if (!obs.hasImageRight || obs.imageRight.isEmpty())
 		throw InputError(record, "", "stereo observation has no right image");
+	loadIfExternal(obs.imageLeft, record, "left image");
+	loadIfExternal(obs.imageRight, record, "right image");
 	const auto calib = obs.getStereoCameraParams();
 	for (const auto& [image, cam, which] :
 		 {std::tuple{&obs.imageLeft, &calib.leftCamera, "left"},
