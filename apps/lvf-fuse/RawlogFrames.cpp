@@ -1,6 +1,5 @@
 #include "RawlogFrames.h"
 
-#include <lvfusion/common/ExternalImages.h>
 #include <lvfusion/common/RawlogReader.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -21,9 +20,9 @@ namespace
 {
 struct Stamped
 {
-	size_t entry;
+	ObservationPlace at;
 	double t;
-	mrpt::obs::CObservation::Ptr obs;
+	std::string label;
 };
 
 /** The observations of the chosen sensor (all of them if the log has only
@@ -33,7 +32,7 @@ std::vector<Stamped> ofSensor(
 	const std::string& option)
 {
 	std::set<std::string> labels;
-	for (const auto& o : all) labels.insert(o.obs->sensorLabel);
+	for (const auto& o : all) labels.insert(o.label);
 	std::string found;
 	for (const auto& label : labels) found += (found.empty() ? "" : ", ") + (label.empty() ? "(no label)" : label);
 	if (chosen.empty())
@@ -50,35 +49,31 @@ std::vector<Stamped> ofSensor(
 			labels.empty() ? "there are none" : ("labels: " + found).c_str()));
 	std::vector<Stamped> out;
 	for (const auto& o : all)
-		if (o.obs->sensorLabel == chosen) out.push_back(o);
+		if (o.label == chosen) out.push_back(o);
 	return out;
 }
 }  // namespace
 
-RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const SensorLabels& labels)
+RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const SensorLabels& labels)
 {
 	RawlogFrames out;
-	out.entries = lvf::common::readRawlogEntries(path);
-	out.externalImages = lvf::common::anchorExternalImages(out.entries, path);
-	out.externalImagesDirectory = lvf::common::externalImagesDirectory(path);
-
 	std::vector<Stamped> allScans, allStereos;
 	std::vector<std::pair<double, mrpt::poses::CPose2D>> odometry;	// time, pose
 	mrpt::poses::CPose2D dead;	// accumulated action increments (sf layout)
-	std::vector<mrpt::poses::CPose2D> poseAtEntry(out.entries.size());
-	auto take = [&](size_t entry, const mrpt::obs::CObservation::Ptr& o) {
+	std::vector<mrpt::poses::CPose2D> poseAtEntry;
+	auto take = [&](ObservationPlace at, const mrpt::obs::CObservation::Ptr& o) {
 		const double t = mrpt::Clock::toDouble(o->timestamp);
 		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o);
 			s && s->sensorLabel != "FUSED")
-			allScans.push_back({entry, t, o});
+			allScans.push_back({at, t, o->sensorLabel});
 		else if (std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o))
-			allStereos.push_back({entry, t, o});
+			allStereos.push_back({at, t, o->sensorLabel});
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o))
 			odometry.emplace_back(t, odo->odometry);
 	};
-	for (size_t i = 0; i < out.entries.size(); i++)
+	lvf::common::RawlogReader reader(path);
+	for (size_t i = 0; auto entry = reader.next(); i++)
 	{
-		const auto& entry = out.entries[i];
 		if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(entry))
 		{
 			out.sensoryFrames = true;
@@ -89,11 +84,15 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const
 			}
 		}
 		else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(entry))
-			for (const auto& o : *sf) take(i, o);
+		{
+			size_t slot = 0;
+			for (const auto& o : *sf) take({i, slot++}, o);
+		}
 		else if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(entry))
-			take(i, o);
-		poseAtEntry[i] = dead;
+			take({i, 0}, o);
+		poseAtEntry.push_back(dead);
 	}
+	out.entries = reader.count();
 	if (!odometry.empty()) out.hasOdometry = true;
 	const auto scans = ofSensor(allScans, labels.laser, path, "2D scans", "--laser-label");
 	auto stereos = ofSensor(allStereos, labels.stereo, path, "stereo pairs", "--stereo-label");
@@ -119,12 +118,10 @@ RawlogFrames loadRawlogFrames(const std::string& path, double maxTimeDiff, const
 			continue;
 		}
 		FusionFrame f;
-		f.scanEntry = s.entry;
-		f.stereoEntry = best->entry;
-		f.scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(s.obs);
-		f.stereo = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(best->obs);
+		f.scanAt = s.at;
+		f.stereoAt = best->at;
 		f.stereoDelay = best->t - s.t;
-		f.odometry = poseAtEntry[s.entry];
+		f.odometry = poseAtEntry[s.at.entry];
 		// The latest odometry reading not after the scan.
 		auto next = std::upper_bound(odometry.begin(), odometry.end(), s.t + 1e-6,
 			[](double t, const auto& reading) { return t < reading.first; });

@@ -1,5 +1,6 @@
 // lvf-fuse: the paper's laser-stereo fusion over a rawlog. See README.md.
 
+#include "FrameStream.h"
 #include "FusionOutputs.h"
 #include "RawlogFrames.h"
 
@@ -21,7 +22,7 @@
 
 #include <filesystem>
 #include <iostream>
-#include <map>
+#include <sys/resource.h>
 
 using lvf::common::InputError;
 using lvf::fusion::CLaserStereoFusion;
@@ -68,32 +69,30 @@ std::optional<lvf::apps::FrameTruth> scoreAgainstTruth(
 	return ft;
 }
 
-/** Per input entry, what to write after it: the results of the frames
- * whose pair ends there. */
-using ResultsAfterEntry = std::map<size_t, std::vector<mrpt::obs::CObservation::Ptr>>;
-
-/** The input, entry by entry, in its own layout, with each frame's results
- * after its pair (inside the sensory frame, in that layout). */
-void writeWithResults(const std::string& path, const lvf::apps::RawlogFrames& in, const ResultsAfterEntry& additions)
+/** One input entry, as it was, then the results of the frames that end at
+ * it: inside the sensory frame in that layout, after the entry otherwise. */
+void writeWithResults(
+	lvf::common::RawlogWriter& out, const mrpt::serialization::CSerializable& entry,
+	const lvf::apps::FrameStream::Results& results)
 {
-	lvf::common::RawlogWriter out(
-		path, in.sensoryFrames ? lvf::common::RawlogFormat::ActionsSensoryFrames
-							   : lvf::common::RawlogFormat::Observations);
-	for (size_t i = 0; i < in.entries.size(); i++)
+	const auto* sf = dynamic_cast<const mrpt::obs::CSensoryFrame*>(&entry);
+	if (sf && !results.empty())
 	{
-		const auto extra = additions.find(i);
-		const auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(in.entries[i]);
-		if (sf && extra != additions.end())
-		{
-			mrpt::obs::CSensoryFrame withResults(*sf);
-			for (const auto& o : extra->second) withResults.insert(o);
-			out.appendEntry(withResults);
-			continue;
-		}
-		out.appendEntry(*in.entries[i]);
-		if (extra != additions.end())
-			for (const auto& o : extra->second) out.appendEntry(*o);
+		mrpt::obs::CSensoryFrame withResults(*sf);
+		for (const auto& o : results) withResults.insert(o);
+		out.appendEntry(withResults);
+		return;
 	}
+	out.appendEntry(entry);
+	for (const auto& o : results) out.appendEntry(*o);
+}
+
+/** The most memory the process has held so far [MB]. */
+double peakMemoryMB()
+{
+	rusage usage{};
+	::getrusage(RUSAGE_SELF, &usage);
+	return static_cast<double>(usage.ru_maxrss) / 1024;	 // kB on Linux
 }
 
 int run(int argc, char** argv)
@@ -139,7 +138,7 @@ int run(int argc, char** argv)
 	const auto truth = truthPath.empty() ? std::vector<lvf::metrics::TruthScan>{}
 										 : lvf::metrics::readTruthScans(truthPath);
 	mrpt::system::CTicTac timer;
-	auto in = lvf::apps::loadRawlogFrames(
+	auto in = lvf::apps::planRawlogFrames(
 		input, argMaxDt.getValue(), {argLaserLabel.getValue(), argStereoLabel.getValue()});
 	if (in.frames.empty())
 		throw InputError(input, "", mrpt::format(
@@ -164,14 +163,14 @@ int run(int argc, char** argv)
 	lvf::apps::FusionOutputs outputs(files, name, argGridRes.getValue());
 	CLaserStereoFusion fusion(options);
 	const bool quiet = argQuiet.getValue();
-	ResultsAfterEntry additions;
 	lvf::metrics::FusionScore total;
 	size_t badFrames = 0, laserAlone = 0, scored = 0;
 	double timeSum = 0;
 	lvf::common::ProgressBar progress("fusing", in.frames.size());
-	for (size_t k = 0; k < in.frames.size(); k++)
-	{
-		const auto& f = in.frames[k];
+	lvf::common::RawlogWriter out(outputPath,
+		in.sensoryFrames ? lvf::common::RawlogFormat::ActionsSensoryFrames : lvf::common::RawlogFormat::Observations);
+	lvf::apps::FrameStream stream(input, in);
+	auto fuseFrame = [&](size_t k, const lvf::apps::FusionFrame& f) {
 		const std::string record = input + ": frame " + std::to_string(k);
 		CLaserStereoFusion::Result r;
 		try
@@ -192,17 +191,17 @@ int run(int argc, char** argv)
 		const auto frameTruth = scoreAgainstTruth(truth, f, r, options);
 		if (frameTruth) total.add(frameTruth->score), scored++;
 		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
-		auto& after = additions[std::max(f.scanEntry, f.stereoEntry)];
-		after.push_back(r.fused);
-		if (!r.left.empty()) after.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
-		// A real log's images stay on disk until a frame reads them; a
-		// long log's would fill the memory if they stayed loaded.
+		lvf::apps::FrameStream::Results results{r.fused};
+		if (!r.left.empty()) results.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
+		// Images kept as files stay on disk until a frame reads them, and
+		// go again after it.
 		f.stereo->imageLeft.unload();
 		f.stereo->imageRight.unload();
 		if (!quiet) progress.update(k + 1);
-	}
-
-	writeWithResults(outputPath, in, additions);
+		return results;
+	};
+	stream.run(fuseFrame, [&](const auto& entry, const auto& results) { writeWithResults(out, entry, results); });
+	out.close();
 	outputs.close();
 	files.commit();
 	if (outputFile) outputFile->commit();
@@ -215,19 +214,20 @@ int run(int argc, char** argv)
 				(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
 		std::cout << mrpt::format(
 			"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
-			"%zu bad frames, %zu frames on the laser alone) in %.2f s\n"
+			"%zu bad frames, %zu frames on the laser alone) in %.2f s, %.0f MB of memory at most "
+			"(%zu of %zu rawlog entries held at once)\n"
 			"  fusion %.2f ms per frame (%s)%s\n",
 			kApp.c_str(), input.c_str(), in.scans, in.stereoPairs, in.frames.size(),
-			in.unpairedScans, badFrames, laserAlone, timer.Tac(), timeSum / double(in.frames.size()),
-			threads.describe().c_str(), noOdometry.c_str());
+			in.unpairedScans, badFrames, laserAlone, timer.Tac(), peakMemoryMB(), stream.entriesHeldAtMost(),
+			in.entries, timeSum / double(in.frames.size()), threads.describe().c_str(), noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
 				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "
 				"of %zu in view, median range error %.3f m (hidden %.3f m)\n",
 				truthPath.c_str(), scored, total.recall(), total.hidden, total.phantomRate(),
 				total.inView, total.rangeErrorMedian, total.hiddenRangeErrorMedian);
-		if (in.externalImages)
-			std::cout << "  " << in.externalImages << " images read from " << in.externalImagesDirectory
+		if (stream.externalImages())
+			std::cout << "  " << stream.externalImages() << " images read from " << stream.externalImagesFolder()
 					  << " (the output rawlog names them by absolute path)\n";
 		std::cout << "  wrote " << (outputFile ? argOutput.getValue() : files.finalPath(outName))
 				  << ", " << name << "_{laser,fused}.gridmap.gz, " << name << "_grids.png, "

@@ -28,26 +28,16 @@ mrpt::obs::CActionCollection::Ptr odometryAction(
 MapRun loadMapRun(
 	const std::string& path, const mrpt::obs::CActionRobotMovement2D::TMotionModelOptions& obsOnlyModel)
 {
-	const auto entries = lvf::common::readRawlogEntries(path);
 	MapRun run;
 	bool odometrySeen = false;
 	// Sensory-frame layout: the action before a frame moves the robot to it.
 	mrpt::obs::CActionCollection::Ptr pendingActions;
 	mrpt::poses::CPose2D deadReckoning, lastStepOdometry;
-	// Observations layout: the odometry readings by time (a frame's reading
-	// may come after its scan in the file), and the one last used.
+	// Observations layout: the odometry readings in file order (a frame's
+	// reading may come after its scan), and the steps whose odometry and
+	// action are taken from them once all are read.
 	std::vector<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose2D>> readings;
-	for (const auto& entry : entries)
-		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(entry))
-			readings.emplace_back(odo->timestamp, odo->odometry);
-	const bool odometryReadings = !readings.empty();
-	mrpt::poses::CPose2D usedOdometry = odometryReadings ? readings.front().second : mrpt::poses::CPose2D();
-	auto odometryAt = [&](mrpt::Clock::time_point t) {
-		mrpt::poses::CPose2D latest = usedOdometry;
-		for (const auto& [stamp, pose] : readings)	// latest reading not after t
-			if (stamp <= t + std::chrono::microseconds(1)) latest = pose;
-		return latest;
-	};
+	std::vector<size_t> stepsByReadings;
 
 	auto addFused = [&](const CObservation2DRangeScan::Ptr& fused) {
 		// lvf-fuse's FUSED scan carries its laser scan's timestamp.
@@ -59,9 +49,13 @@ MapRun loadMapRun(
 				return;
 			}
 	};
-	for (const auto& entry : entries)
+	// One pass, keeping only the scans: a long log's images would not fit.
+	lvf::common::RawlogReader reader(path);
+	while (const auto entry = reader.next())
 	{
-		if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(entry))
+		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(entry))
+			readings.emplace_back(odo->timestamp, odo->odometry);
+		else if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(entry))
 		{
 			run.sensoryFrames = true;
 			if (auto move = actions->getBestMovementEstimation())
@@ -106,11 +100,21 @@ MapRun loadMapRun(
 			step.laser = scan;
 			step.laserFrame = std::make_shared<mrpt::obs::CSensoryFrame>();
 			step.laserFrame->insert(scan);
-			step.odometry = odometryAt(scan->timestamp);
-			step.action = odometryAction(step.odometry - usedOdometry, obsOnlyModel, scan->timestamp);
-			usedOdometry = step.odometry;
+			stepsByReadings.push_back(run.steps.size());
 			run.steps.push_back(step);
 		}
+	}
+	const bool odometryReadings = !readings.empty();
+	mrpt::poses::CPose2D usedOdometry = odometryReadings ? readings.front().second : mrpt::poses::CPose2D();
+	for (size_t i : stepsByReadings)
+	{
+		auto& step = run.steps[i];
+		const auto t = step.laser->timestamp;
+		step.odometry = usedOdometry;
+		for (const auto& [stamp, pose] : readings)	// the latest reading not after the scan
+			if (stamp <= t + std::chrono::microseconds(1)) step.odometry = pose;
+		step.action = odometryAction(step.odometry - usedOdometry, obsOnlyModel, t);
+		usedOdometry = step.odometry;
 	}
 	if (run.steps.empty())
 		throw lvf::common::InputError(path, "", "no 2D laser scan (CObservation2DRangeScan) in the rawlog");

@@ -37,24 +37,20 @@ void forEachImage(const mrpt::obs::CObservation::Ptr& o, F&& f)
 }
 }  // namespace
 
-size_t anchorExternalImages(
-	std::vector<mrpt::serialization::CSerializable::Ptr>& entries, const std::string& rawlogPath)
+size_t anchorExternalImages(const mrpt::serialization::CSerializable::Ptr& entry, const std::string& folder)
 {
-	const fs::path folder = fs::absolute(externalImagesDirectory(rawlogPath));
+	const fs::path absoluteFolder = fs::absolute(folder);
 	size_t count = 0;
 	auto anchor = [&](mrpt::img::CImage& image) {
 		if (!image.isExternallyStored()) return;
 		count++;
 		const fs::path name(image.getExternalStorageFile());
-		if (name.is_relative()) image.setExternalStorage((folder / name).lexically_normal().string());
+		if (name.is_relative()) image.setExternalStorage((absoluteFolder / name).lexically_normal().string());
 	};
-	for (auto& entry : entries)
-	{
-		if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(entry))
-			for (const auto& o : *sf) forEachImage(o, anchor);
-		else if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(entry))
-			forEachImage(o, anchor);
-	}
+	if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(entry))
+		for (const auto& o : *sf) forEachImage(o, anchor);
+	else if (auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(entry))
+		forEachImage(o, anchor);
 	return count;
 }
 

@@ -6,31 +6,33 @@
 
 namespace lvf::common
 {
-std::vector<mrpt::serialization::CSerializable::Ptr> readRawlogEntries(const std::string& path)
+RawlogReader::RawlogReader(const std::string& path) : m_path(path)
 {
 	if (!mrpt::system::fileExists(path)) throw InputError(path, "", "input rawlog not found");
-	std::vector<mrpt::serialization::CSerializable::Ptr> entries;
-	mrpt::io::CFileGZInputStream file(path);
-	auto archive = mrpt::serialization::archiveFrom(file);
-	for (;;)
+	m_file = std::make_unique<mrpt::io::CFileGZInputStream>(path);
+	m_archive = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(*m_file);
+}
+
+RawlogReader::~RawlogReader() = default;
+
+mrpt::serialization::CSerializable::Ptr RawlogReader::next()
+{
+	try
 	{
-		try
-		{
-			entries.push_back(archive.ReadObject());
-		}
-		catch (const mrpt::serialization::CExceptionEOF&)
-		{
-			break;
-		}
-		catch (const std::exception&)
-		{
-			throw InputError(
-				path, "record " + std::to_string(entries.size()),
-				"not an MRPT object: corrupt, truncated or not a rawlog");
-		}
+		auto object = m_archive->ReadObject();
+		m_count++;
+		return object;
 	}
-	if (entries.empty()) throw InputError(path, "", "empty rawlog");
-	return entries;
+	catch (const mrpt::serialization::CExceptionEOF&)
+	{
+		if (m_count == 0) throw InputError(m_path, "", "empty rawlog");
+		return nullptr;
+	}
+	catch (const std::exception&)
+	{
+		throw InputError(
+			m_path, "record " + std::to_string(m_count), "not an MRPT object: corrupt, truncated or not a rawlog");
+	}
 }
 
 }  // namespace lvf::common

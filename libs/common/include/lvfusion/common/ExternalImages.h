@@ -11,7 +11,6 @@
 #include <mrpt/serialization/CSerializable.h>
 
 #include <string>
-#include <vector>
 
 namespace lvf::common
 {
@@ -22,12 +21,11 @@ namespace lvf::common
  * path that has one ("logs/a.rawlog" -> "logsImages"). */
 std::string externalImagesDirectory(const std::string& rawlogPath);
 
-/** Points every externally stored image of the entries' CObservationImage
- * and CObservationStereoImages observations (in sensory frames too) at
- * its file's absolute path in the rawlog's images folder; names that are
- * absolute already stay. Loads nothing. Returns how many images are
- * externally stored. */
-size_t anchorExternalImages(
-	std::vector<mrpt::serialization::CSerializable::Ptr>& entries, const std::string& rawlogPath);
+/** Points every externally stored image of the entry's CObservationImage
+ * and CObservationStereoImages observations (in a sensory frame too) at
+ * its file's absolute path in `folder` (the log's images folder, relative
+ * to the working directory or absolute); names that are absolute already
+ * stay. Loads nothing. Returns how many images are externally stored. */
+size_t anchorExternalImages(const mrpt::serialization::CSerializable::Ptr& entry, const std::string& folder);
 
 }  // namespace lvf::common

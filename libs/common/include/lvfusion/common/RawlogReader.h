@@ -1,17 +1,48 @@
 #pragma once
-// Reading a whole rawlog (either MRPT layout) object by object. MRPT's CRawlog
+// Reading a rawlog (either MRPT layout) object by object. MRPT's CRawlog
 // loader prints its own multi-line errors and keeps going; here a corrupt or
 // truncated file is one InputError naming the record.
 
 #include <mrpt/serialization/CSerializable.h>
 
+#include <memory>
 #include <string>
-#include <vector>
+
+namespace mrpt::io
+{
+class CFileGZInputStream;
+}
+namespace mrpt::serialization
+{
+class CArchive;
+}
 
 namespace lvf::common
 {
-/** Every object of the file, in order (observations, or actions and sensory
- * frames). Throws InputError if the file is missing, empty or not a rawlog. */
-std::vector<mrpt::serialization::CSerializable::Ptr> readRawlogEntries(const std::string& path);
+/** The file's objects one at a time (observations, or actions and sensory
+ * frames), for logs too long to hold: a real robot's, with its images. */
+class RawlogReader
+{
+   public:
+	/** Throws InputError if the file is missing. */
+	explicit RawlogReader(const std::string& path);
+	~RawlogReader();
+	RawlogReader(const RawlogReader&) = delete;
+	RawlogReader& operator=(const RawlogReader&) = delete;
+
+	/** The next object, nullptr after the last. Throws InputError naming
+	 * the record if it is not an MRPT object (corrupt, truncated, not a
+	 * rawlog), and if the file holds none at all. */
+	mrpt::serialization::CSerializable::Ptr next();
+
+	/** How many objects next() has returned. */
+	size_t count() const { return m_count; }
+
+   private:
+	std::string m_path;
+	std::unique_ptr<mrpt::io::CFileGZInputStream> m_file;
+	std::unique_ptr<mrpt::serialization::CArchive> m_archive;
+	size_t m_count = 0;
+};
 
 }  // namespace lvf::common
