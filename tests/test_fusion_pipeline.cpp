@@ -335,3 +335,42 @@ TEST(FusionPipeline, SubpixelRefinementPutsMatchesAtTheirPixelsDepth)
 	EXPECT_LT(refined.first, 0.9 * parabola.first);
 	EXPECT_LT(refined.second, 0.95 * parabola.second);
 }
+
+TEST(FusionPipeline, WarningsAndEachFramesFiguresGoThroughMrptsLogger)
+{
+	// An MRPT program embedding the class sees its warnings as it sees
+	// MRPT's own (COutputLogger, WARN), and each frame's figures at DEBUG.
+	auto world = simulation::loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/two_cubes.yaml");
+	world.path = {{0, 0, 0}, {0.05, 0, 0}};
+	simulation::CStereoLaserSimulator sim(world, simulation::CStereoLaserSimulator::TOptions());
+	fusion::CLaserStereoFusion fusion;
+	std::vector<std::pair<mrpt::system::VerbosityLevel, std::string>> logged;
+	fusion.logging_enable_console_output = false;
+	fusion.logRegisterCallback([&](std::string_view msg, mrpt::system::VerbosityLevel level, auto, auto) {
+		logged.emplace_back(level, std::string(msg));
+	});
+
+	auto first = sim.simulateNextFrame(false);
+	first.scan->setScanRange(5, std::numeric_limits<float>::quiet_NaN());
+	const auto r0 = fusion.process(*first.scan, *first.stereo, "frame 0", first.odometry);
+	ASSERT_EQ(r0.warnings.size(), 1u);
+	ASSERT_EQ(logged.size(), 1u);	// INFO and above by default: no figures
+	EXPECT_EQ(logged[0].first, mrpt::system::LVL_WARN);
+	EXPECT_NE(logged[0].second.find(r0.warnings[0]), std::string::npos) << logged[0].second;
+
+	logged.clear();
+	fusion.setMinLoggingLevel(mrpt::system::LVL_DEBUG);
+	const auto second = sim.simulateNextFrame(false);
+	const auto r1 = fusion.process(*second.scan, *second.stereo, "frame 1", second.odometry);
+	ASSERT_EQ(logged.size(), 1u);
+	EXPECT_EQ(logged[0].first, mrpt::system::LVL_DEBUG);
+	const std::string expected = "frame 1: " + std::to_string(r1.segments.size()) + " segments; ";
+	EXPECT_EQ(logged[0].second.rfind(expected, 0), 0u) << logged[0].second;
+	// The cube the laser misses: bearings vision brought nearer, as counted.
+	const size_t shortened = r1.shortenedBearings(*second.scan);
+	EXPECT_GT(shortened, 0u);
+	EXPECT_NE(logged[0].second.find("; " + std::to_string(shortened) + " of " +
+				  std::to_string(second.scan->getScanSize()) + " bearings nearer than the laser"),
+		std::string::npos)
+		<< logged[0].second;
+}

@@ -13,6 +13,7 @@
 #include <opencv2/core/utility.hpp>
 
 #include <functional>
+#include <sstream>
 
 using namespace lvf::test;
 using lvf::simulation::CStereoLaserSimulator;
@@ -71,6 +72,25 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	const std::string csv = slurp(m_dir / "out/two_cubes_frames.csv");
 	EXPECT_EQ(countLines(csv), 2u);
 	EXPECT_EQ(csv.find(",,"), std::string::npos) << csv;
+	// --verbose: each frame's figures as it is fused, the CSV's own.
+	const auto verbose = fuse("--input " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog --outdir v --verbose");
+	ASSERT_EQ(verbose.status, 0) << verbose.err;
+	auto fields = [](const std::string& line) {
+		std::vector<std::string> out;
+		std::stringstream in(line);
+		for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+		return out;
+	};
+	const auto header = fields(csv.substr(0, csv.find('\n')));
+	const auto row = fields(csv.substr(csv.find('\n') + 1));
+	const auto column = std::find(header.begin(), header.end(), "shortened_bearings") - header.begin();
+	const std::string line = "lvf-fuse: " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog: frame 0: ";
+	const auto at = verbose.out.find(line);
+	ASSERT_NE(at, std::string::npos) << verbose.out;
+	EXPECT_NE(verbose.out.find("; " + row.at(size_t(column)) + " of 181 bearings nearer than the laser", at),
+		std::string::npos)
+		<< verbose.out;
+	EXPECT_EQ(r.out.find(": frame 0: "), std::string::npos) << r.out;
 }
 
 TEST_F(LvfFuseCli, DumpConfigIsTheShippedFusionIni)

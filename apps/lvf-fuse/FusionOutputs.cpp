@@ -1,6 +1,5 @@
 #include "FusionOutputs.h"
 
-#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -97,9 +96,7 @@ void FusionOutputs::add(
 	m_laserGrid.insertObservation(laser, pose);
 	m_fusedGrid.insertObservation(*r.fused, pose);
 
-	size_t shortened = 0;
-	for (size_t i = 0; i < r.visualRanges.size(); i++)
-		shortened += r.fused->getScanRange(i) < lvf::laserRangeOrMax(laser, i);
+	const size_t shortened = r.shortenedBearings(laser);
 	const auto bridged = static_cast<size_t>(std::count(r.bridged.begin(), r.bridged.end(), true));
 	const auto& t = r.times;
 	m_csv << mrpt::format(

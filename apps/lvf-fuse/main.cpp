@@ -117,6 +117,7 @@ int run(int argc, char** argv)
 	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
+	TCLAP::SwitchArg argVerbose("v", "verbose", "Also print each frame's figures (segments, pixels, points, bearings, time) as it is fused", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
 
 	const auto options = loadOptions(argConfig.getValue());
@@ -163,6 +164,17 @@ int run(int argc, char** argv)
 	lvf::apps::FusionOutputs outputs(files, name, argGridRes.getValue());
 	CLaserStereoFusion fusion(options);
 	const bool quiet = argQuiet.getValue();
+	// The fusion's warnings are printed below, one line each in this app's
+	// words, with those of frames it could not fuse at all; its DEBUG
+	// lines (each frame's figures) only when asked.
+	fusion.logging_enable_console_output = false;
+	if (argVerbose.getValue() && !quiet)
+	{
+		fusion.setMinLoggingLevel(mrpt::system::LVL_DEBUG);
+		fusion.logRegisterCallback([](std::string_view msg, mrpt::system::VerbosityLevel level, auto, auto) {
+			if (level == mrpt::system::LVL_DEBUG) std::cout << kApp << ": " << msg << std::endl;
+		});
+	}
 	lvf::metrics::FusionScore total;
 	size_t badFrames = 0, laserAlone = 0, scored = 0;
 	double timeSum = 0;

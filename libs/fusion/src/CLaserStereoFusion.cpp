@@ -5,6 +5,7 @@
 #include <lvfusion/fusion/ModelWalls.h>
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/LaserRange.h>
 
 #include <chrono>
 #include <cmath>
@@ -76,7 +77,20 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	memory.saveToConfigFile(c, kMemory);
 }
 
-CLaserStereoFusion::CLaserStereoFusion(const TOptions& options) : m_options(options), m_memory(options.memory) {}
+CLaserStereoFusion::CLaserStereoFusion() : CLaserStereoFusion(TOptions()) {}
+
+CLaserStereoFusion::CLaserStereoFusion(const TOptions& options)
+	: mrpt::system::COutputLogger("CLaserStereoFusion"), m_options(options), m_memory(options.memory)
+{
+}
+
+size_t CLaserStereoFusion::Result::shortenedBearings(const mrpt::obs::CObservation2DRangeScan& laser) const
+{
+	size_t shortened = 0;
+	for (size_t i = 0; i < laser.getScanSize() && fused && i < fused->getScanSize(); i++)
+		shortened += fused->getScanRange(i) < lvf::laserRangeOrMax(laser, i);
+	return shortened;
+}
 
 CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
 	const mrpt::obs::CObservation2DRangeScan& scan, std::string why)
@@ -91,6 +105,22 @@ CLaserStereoFusion::Result CLaserStereoFusion::laserOnly(
 }
 
 CLaserStereoFusion::Result CLaserStereoFusion::process(
+	const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::obs::CObservationStereoImages& stereo,
+	const std::string& record, const std::optional<mrpt::poses::CPose2D>& odometry)
+{
+	Result r = fuseFrame(scan, stereo, record, odometry);
+	for (const auto& w : r.warnings) MRPT_LOG_WARN(w);
+	if (isLoggingLevelVisible(mrpt::system::LVL_DEBUG))
+		MRPT_LOG_DEBUG_FMT(
+			"%s: %zu segments; %zu pixels inconsistent, %zu searched; %zu visual points (%zu grown, %zu "
+			"remembered); %zu of %zu bearings nearer than the laser; %.2f ms%s",
+			record.c_str(), r.segments.size(), r.evaluation.count(lvf::evaluation::PixelState::Inconsistent),
+			r.search.stats.searchedPixels, r.search.points.size(), r.grownPoints, r.remembered.size(),
+			r.shortenedBearings(scan), scan.getScanSize(), r.times.total(), r.fellBackToLaser ? " (laser only)" : "");
+	return r;
+}
+
+CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	const mrpt::obs::CObservation2DRangeScan& rawScan,
 	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record,
 	const std::optional<mrpt::poses::CPose2D>& odometry)

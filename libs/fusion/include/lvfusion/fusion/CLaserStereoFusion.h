@@ -12,6 +12,10 @@
 //
 // Configuration: an MRPT INI file with one section per stage (defaults and
 // meanings in share/lvfusion/config/fusion.ini, or lvf-fuse --dump-config).
+// Messages: an MRPT COutputLogger ("CLaserStereoFusion"), as MRPT's own
+// classes are: a frame's warnings at WARN (on the console unless told
+// otherwise), its figures -- segments, pixels, points, bearings, time -- at
+// DEBUG. Result::warnings holds the same warnings for the program itself.
 
 #include <lvfusion/common/HeightBand.h>
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
@@ -22,12 +26,13 @@
 #include <lvfusion/lines/ScanLineExtractor.h>
 #include <lvfusion/model/PlanarSceneModel.h>
 #include <mrpt/rtti/CObject.h>
+#include <mrpt/system/COutputLogger.h>
 
 #include <optional>
 
 namespace lvf::fusion
 {
-class CLaserStereoFusion : public mrpt::rtti::CObject
+class CLaserStereoFusion : public mrpt::rtti::CObject, public mrpt::system::COutputLogger
 {
 	DEFINE_MRPT_OBJECT(CLaserStereoFusion, lvf::fusion)
 
@@ -103,9 +108,13 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 		bool fellBackToLaser = false;  //!< vision not used this frame (see warnings)
 		std::vector<std::string> warnings;	//!< one line each, naming the record
 		StageTimes times;
+
+		/** Bearings where the fused scan is nearer than `laser` (the scan
+		 * it was fused from) says: what vision added. */
+		size_t shortenedBearings(const mrpt::obs::CObservation2DRangeScan& laser) const;
 	};
 
-	CLaserStereoFusion() = default;
+	CLaserStereoFusion();
 	explicit CLaserStereoFusion(const TOptions& options);
 
 	/** @param record names the frame in messages ("log.rawlog: frame 12").
@@ -129,6 +138,11 @@ class CLaserStereoFusion : public mrpt::rtti::CObject
 	static Result laserOnly(const mrpt::obs::CObservation2DRangeScan& scan, std::string why);
 
    private:
+	/** process() without its messages. */
+	Result fuseFrame(
+		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::obs::CObservationStereoImages& stereo,
+		const std::string& record, const std::optional<mrpt::poses::CPose2D>& odometry);
+
 	TOptions m_options;
 	lvf::evaluation::RectifiedStereo m_stereo;	// caches rectification maps
 	VisualPointMemory m_memory;
