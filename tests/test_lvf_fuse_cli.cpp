@@ -93,6 +93,21 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	EXPECT_EQ(r.out.find(": frame 0: "), std::string::npos) << r.out;
 }
 
+TEST_F(LvfFuseCli, EvaluationPicturesCanBeThinnedOut)
+{
+	// A long log's output need not carry a picture per frame.
+	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+	for (const auto& [every, pictures] : {std::pair{"1", 8}, std::pair{"3", 3}, std::pair{"0", 0}})
+	{
+		const std::string dir = std::string("every") + every;
+		const auto r = fuse(sample + " --eval-every " + every + " --outdir " + dir);
+		ASSERT_EQ(r.status, 0) << r.err;
+		const auto counts = labelCounts(run(LVF_RAWLOG_EDIT, "--info -i " + dir + "/box_room_fused.rawlog").out);
+		EXPECT_EQ(counts.at("FUSED"), 8) << every;
+		EXPECT_EQ(counts.count("EVAL") ? counts.at("EVAL") : 0, pictures) << every;
+	}
+}
+
 TEST_F(LvfFuseCli, DumpConfigIsTheShippedFusionIni)
 {
 	const auto r = fuse("--dump-config");
@@ -117,6 +132,7 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --config " + badValue.string(), "value.ini: [ModelEvaluator] window_size: must be odd"},
 		{"--input " + sample + " --max-time-diff -1", "--max-time-diff: must be >= 0"},
 		{"--input " + sample + " --threads -2", "--threads: must be >= 0"},
+		{"--input " + sample + " --eval-every -1", "--eval-every: must be >= 0"},
 		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: cannot open truth scan file"},
 	};
 	for (const auto& [args, expected] : cases)

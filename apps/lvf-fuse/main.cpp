@@ -113,6 +113,7 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argLaserLabel("", "laser-label", "Fuse the 2D scans of this sensor (sensorLabel; default: the log's only laser)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<std::string> argStereoLabel("", "stereo-label", "With the stereo pairs of this sensor (sensorLabel; default: the log's only stereo camera)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
+	TCLAP::ValueArg<int> argEvalEvery("", "eval-every", "Add the evaluation picture (EVAL) of every N-th frame to the output rawlog; 0: none (default 1: every frame; a picture is about the size of a stereo pair)", false, 1, "N", cmd);
 	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m] (default 0.05)", false, 0.05, "M", cmd);
 	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
@@ -130,6 +131,8 @@ int run(int argc, char** argv)
 	}
 	if (!(argMaxDt.getValue() >= 0)) throw InputError("--max-time-diff", "", "must be >= 0");
 	if (!(argGridRes.getValue() > 0)) throw InputError("--grid-resolution", "", "must be > 0");
+	if (argEvalEvery.getValue() < 0) throw InputError("--eval-every", "", "must be >= 0");
+	const auto evalEvery = static_cast<size_t>(argEvalEvery.getValue());
 	threads.apply();
 	lvf::registerAllClasses();
 
@@ -204,7 +207,8 @@ int run(int argc, char** argv)
 		if (frameTruth) total.add(frameTruth->score), scored++;
 		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
 		lvf::apps::FrameStream::Results results{r.fused};
-		if (!r.left.empty()) results.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
+		if (!r.left.empty() && evalEvery > 0 && k % evalEvery == 0)
+			results.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));
 		// Images kept as files stay on disk until a frame reads them, and
 		// go again after it.
 		f.stereo->imageLeft.unload();
