@@ -45,6 +45,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	band.high = ini.real("robot_height", band.high, band.low, 100);
 	floorHeight = ini.real("floor_height", floorHeight, -100, 100);
 	facetStrayReturns = ini.flag("facet_stray_returns", facetStrayReturns);
+	joinSegmentEnds = ini.real("join_segment_ends", joinSegmentEnds, 0, 10);
 	minFloorAgreement = ini.real("min_floor_agreement", minFloorAgreement, 0, 1);
 	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
 	calibrationNcc = ini.real("calibration_ncc", calibrationNcc, -1, 1);
@@ -65,6 +66,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "robot_height", band.high, "upper edge of the band: the robot's height [m]");
 	writeOption(c, s, "floor_height", floorHeight, "floor z in the robot frame [m]");
 	writeOption(c, s, "facet_stray_returns", facetStrayReturns, "model returns that fit no line segment as narrow walls square to their rays");
+	writeOption(c, s, "join_segment_ends", joinSegmentEnds, "join the ends of line segments on neighbouring rays at most this far apart by a wall (a corner the fit left open); 0: never [m]");
 	writeOption(c, s, "min_floor_agreement", minFloorAgreement, "less of the model's visible floor consistent in the images than this share: calibration suspect, laser only [0..1]");
 	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more of all judged pixels inconsistent than this share: calibration suspect, laser only [0..1]");
 	writeOption(c, s, "calibration_ncc", calibrationNcc, "for these two checks a judged pixel agrees with the model at this NCC or more (not the evaluation's ncc_threshold) [-1..1]");
@@ -163,7 +165,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	});
 	const cv::Mat1f modelDisparity = timed(r.times.model, [&] {
 		r.model = lvf::model::PlanarSceneModel(
-			modelWalls(scan, r.segments, m_options.facetStrayReturns), m_options.floorHeight);
+			modelWalls(scan, r.segments, m_options.facetStrayReturns, m_options.joinSegmentEnds), m_options.floorHeight);
 		return lvf::evaluation::renderModelDisparity(r.model, r.geometry);
 	});
 	timed(r.times.rectify, [&] {

@@ -1,12 +1,13 @@
 #include <lvfusion/fusion/ModelWalls.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lvf::fusion
 {
 std::vector<lvf::model::VerticalWall> modelWalls(
 	const mrpt::obs::CObservation2DRangeScan& scan, const std::vector<lvf::lines::LineSegment>& segments,
-	bool facetStrayReturns)
+	bool facetStrayReturns, double joinGap)
 {
 	std::vector<lvf::model::VerticalWall> walls;
 	std::vector<bool> covered(scan.getScanSize(), false);
@@ -14,6 +15,18 @@ std::vector<lvf::model::VerticalWall> modelWalls(
 	{
 		walls.push_back({s.start, s.end});
 		for (size_t i = s.firstIndex; i <= s.lastIndex && i < covered.size(); i++) covered[i] = true;
+	}
+	if (joinGap > 0)
+	{
+		std::vector<const lvf::lines::LineSegment*> inScanOrder;
+		for (const auto& s : segments) inScanOrder.push_back(&s);
+		std::sort(inScanOrder.begin(), inScanOrder.end(), [](auto* a, auto* b) { return a->firstIndex < b->firstIndex; });
+		for (size_t k = 1; k < inScanOrder.size(); k++)
+		{
+			const auto &before = *inScanOrder[k - 1], &after = *inScanOrder[k];
+			if (after.firstIndex <= before.lastIndex + 2 && (after.start - before.end).norm() <= joinGap)
+				walls.push_back({before.end, after.start});
+		}
 	}
 	if (!facetStrayReturns || scan.getScanSize() < 2) return walls;
 	const double step = scan.aperture / double(scan.getScanSize() - 1);

@@ -42,6 +42,9 @@ class CLaserStereoFusion : public mrpt::rtti::CObject, public mrpt::system::COut
 		HeightBand band;  //!< obstacle_min_height .. robot_height [m]
 		double floorHeight = 0;	 //!< floor z in the robot frame [m]
 		bool facetStrayReturns = true;	//!< see ModelWalls.h
+		/** Join the ends of segments on neighbouring rays that lie at most
+		 * this far apart (ModelWalls.h) [m]; 0: never. */
+		double joinSegmentEnds = 0.15;
 		/** The calibration (not the world) is taken to be wrong, and the
 		 * frame falls back to the laser, when less than this share of the
 		 * model's floor looks consistent in the images (CalibrationEvidence.h;
