@@ -171,7 +171,8 @@ int run(int argc, char** argv)
 	// words, with those of frames it could not fuse at all; its DEBUG
 	// lines (each frame's figures) only when asked.
 	fusion.logging_enable_console_output = false;
-	if (argVerbose.getValue() && !quiet)
+	const bool verbose = argVerbose.getValue() && !quiet;
+	if (verbose)
 	{
 		fusion.setMinLoggingLevel(mrpt::system::LVL_DEBUG);
 		fusion.logRegisterCallback([](std::string_view msg, mrpt::system::VerbosityLevel level, auto, auto) {
@@ -213,7 +214,7 @@ int run(int argc, char** argv)
 		// go again after it.
 		f.stereo->imageLeft.unload();
 		f.stereo->imageRight.unload();
-		if (!quiet) progress.update(k + 1);
+		if (!quiet && !verbose) progress.update(k + 1);	// -v's lines instead
 		return results;
 	};
 	stream.run(fuseFrame, [&](const auto& entry, const auto& results) { writeWithResults(out, entry, results); });
