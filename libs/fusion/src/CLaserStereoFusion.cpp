@@ -112,13 +112,13 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 {
 	Result r = fuseFrame(scan, stereo, record, odometry);
 	for (const auto& w : r.warnings) MRPT_LOG_WARN(w);
-	if (isLoggingLevelVisible(mrpt::system::LVL_DEBUG))
-		MRPT_LOG_DEBUG_FMT(
-			"%s: %zu segments; %zu pixels inconsistent, %zu searched; %zu visual points (%zu grown, %zu "
-			"remembered); %zu of %zu bearings nearer than the laser; %.2f ms%s",
-			record.c_str(), r.segments.size(), r.evaluation.count(lvf::evaluation::PixelState::Inconsistent),
-			r.search.stats.searchedPixels, r.search.points.size(), r.grownPoints, r.remembered.size(),
-			r.shortenedBearings(scan), scan.getScanSize(), r.times.total(), r.fellBackToLaser ? " (laser only)" : "");
+	// (MRPT's macro evaluates its arguments only when DEBUG is visible.)
+	MRPT_LOG_DEBUG_FMT(
+		"%s: %zu segments; %zu pixels inconsistent, %zu searched; %zu visual points (%zu grown, %zu "
+		"remembered); %zu of %zu bearings nearer than the laser; %.2f ms%s",
+		record.c_str(), r.segments.size(), r.evaluation.count(lvf::evaluation::PixelState::Inconsistent),
+		r.search.stats.searchedPixels, r.search.points.size(), r.grownPoints, r.remembered.size(),
+		r.shortenedBearings(scan), scan.getScanSize(), r.times.total(), r.fellBackToLaser ? " (laser only)" : "");
 	return r;
 }
 
