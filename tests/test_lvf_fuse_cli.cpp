@@ -133,7 +133,12 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --max-time-diff -1", "--max-time-diff: must be >= 0"},
 		{"--input " + sample + " --threads -2", "--threads: must be >= 0"},
 		{"--input " + sample + " --eval-every -1", "--eval-every: must be >= 0"},
-		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: cannot open truth scan file"},
+		{"--input " + sample + " --output out/", "--output: names a folder, not a file"},
+		{"--input " + sample + " --grid-resolution 1e-9", "--grid-resolution: must be in [0.005, 5]"},
+		{"--input .", ".: input rawlog is a folder, not a file"},
+		{"--input " + sample + " --config .", ".: configuration file is a folder, not a file"},
+		{"--input " + sample + " --truth .", ".: truth scan file is a folder, not a file"},
+		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: truth scan file not found"},
 	};
 	for (const auto& [args, expected] : cases)
 	{
@@ -144,6 +149,44 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
 		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
 	}
+}
+
+TEST_F(LvfFuseCli, AnOutputPlaceThatCannotBeWrittenIsOneLineBeforeAnyWork)
+{
+	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog";
+	write("taken", "a file where a folder should go\n");
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{"--outdir taken", "taken: exists and is not a folder"},
+		{"--outdir taken/out", "taken/out: cannot write the outputs here: Not a directory"},
+		{"--outdir out --output taken/fused.rawlog", "taken: exists and is not a folder"},
+		{"--outdir /proc/lvf-out", "/proc/lvf-out: cannot write the outputs here"},
+	};
+	for (const auto& [args, expected] : cases)
+	{
+		const auto r = fuse(sample + " " + args);
+		EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+		EXPECT_EQ(countLines(r.err), 1u) << args << "\n" << r.err;
+		EXPECT_NE(r.err.find("lvf-fuse: error: " + expected), std::string::npos) << args << "\n" << r.err;
+		EXPECT_EQ(slurp(m_dir / "taken"), "a file where a folder should go\n");
+		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
+		for (const auto& entry : fs::directory_iterator(m_dir))	 // no staging folder left behind
+			EXPECT_EQ(entry.path().filename().string().find("partial"), std::string::npos) << entry.path();
+	}
+}
+
+TEST_F(LvfFuseCli, AnOutputRawlogNamedByItselfGoesWhereItIsNamed)
+{
+	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog --eval-every 0";
+	const auto byDefault = fuse(sample + " --outdir out");
+	const auto bare = fuse(sample + " --outdir grids --output fused.rawlog");  // no folder: the current one
+	const auto nested = fuse(sample + " --outdir grids --output runs/today/fused.rawlog");
+	for (const auto* r : {&byDefault, &bare, &nested}) ASSERT_EQ(r->status, 0) << r->err;
+	const auto expected = slurp(m_dir / "out" / "two_cubes_fused.rawlog");
+	EXPECT_EQ(slurp(m_dir / "fused.rawlog"), expected);
+	EXPECT_EQ(slurp(m_dir / "runs" / "today" / "fused.rawlog"), expected);
+	EXPECT_FALSE(fs::exists(m_dir / "grids" / "two_cubes_fused.rawlog"));
+	for (const auto& entry : fs::directory_iterator(m_dir))	// no staging folder left behind
+		EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
 }
 
 TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)

@@ -364,11 +364,15 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 			archive << scan;
 		}
 	}
+	write("prior", "a map without its extension\n");
 	write("key.ini", "[PF_options]\nBETTA = 0.5\n");
 	write("section.ini", "[ParticleFilter]\nBETA = 0.5\n");
 	write("number.ini", "[LocalizationExperiment]\nparticles_count = many\n");
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
+		{"--input " + sample + " --map prior", "prior: no file extension to tell the map format"},
+		{"--input " + sample + " --map .", ".: map file is a folder, not a file"},
+		{"--input " + sample + " --start 0,0 --goal 1e300,0", "--goal: goal (1e+300, 0) is outside the laser map"},
 		{"--input " + sample + " --map bad.gridmap.gz", "bad.gridmap.gz: not a readable MRPT mrpt::maps::COccupancyGridMap2D"},
 		{"--input " + sample + " --start 50,0 --goal 8.5,0", "--start: start (50.00, 0.00) is outside the laser map"},
 		{"--input " + sample + " --start 0,0 --goal 4.2,1.2", "--goal: goal (4.20, 1.20) is inside an obstacle of the laser map"},

@@ -106,7 +106,7 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 	const auto badHeader = write("header.ini", "[SimulatedLaser\nmax_range = 8\n");
 
 	const std::vector<std::tuple<std::string, std::string>> cases{
-		{"--world /nonexistent.yaml", "/nonexistent.yaml: cannot open world file"},
+		{"--world /nonexistent.yaml", "/nonexistent.yaml: world file not found"},
 		{"--world " + badYaml.string(), "bad.yaml: line 3: malformed YAML"},
 		{"--world " + unknownKey.string(), "typo.yaml: line 2: boxes[0].heigth: unknown key 'heigth'"},
 		{"--world " + negative.string(), "neg.yaml: line 2: boxes[0].size[1]: -2 is out of range"},

@@ -188,6 +188,13 @@ TEST_F(NavigationLoop, NaNPoseIsReportedWithoutRunning)
 	s = boxRoom();
 	s.target.y = INFINITY;
 	EXPECT_EQ(nav::runNavigation(s, setup(nav::Sensing::Laser)).metrics.outcome, Outcome::InvalidPose);
+	// Finite, but farther than any grid could reach: not run either.
+	s = boxRoom();
+	s.target.x = 1e300;
+	const auto farOff = nav::runNavigation(s, setup(nav::Sensing::Laser)).metrics;
+	EXPECT_EQ(farOff.outcome, Outcome::InvalidPose);
+	EXPECT_EQ(farOff.cycles, 0u);
+	EXPECT_NE(farOff.detail.find("more than 1000 m outside the world"), std::string::npos) << farOff.detail;
 }
 
 TEST_F(NavigationLoop, UnreachableTargetEndsWithinTheTimeBoundWithoutCollision)

@@ -100,7 +100,7 @@ TEST(WorldLoader, MissingFileIsAnInputError)
 	}
 	catch (const InputError& e)
 	{
-		EXPECT_STREQ(e.what(), "/nonexistent/world.yaml: cannot open world file");
+		EXPECT_STREQ(e.what(), "/nonexistent/world.yaml: world file not found");
 	}
 }
 

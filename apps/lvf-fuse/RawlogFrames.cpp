@@ -7,6 +7,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/OdometryReadings.h>
 #include <mrpt/core/format.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@ struct Stamped
 {
 	ObservationPlace at;
 	double t;
+	mrpt::Clock::time_point stamp;
 	std::string label;
 };
 
@@ -58,18 +60,18 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 {
 	RawlogFrames out;
 	std::vector<Stamped> allScans, allStereos;
-	std::vector<std::pair<double, mrpt::poses::CPose2D>> odometry;	// time, pose
+	lvf::common::OdometryReadings odometry;
 	mrpt::poses::CPose2D dead;	// accumulated action increments (sf layout)
 	std::vector<mrpt::poses::CPose2D> poseAtEntry;
 	auto take = [&](ObservationPlace at, const mrpt::obs::CObservation::Ptr& o) {
 		const double t = mrpt::Clock::toDouble(o->timestamp);
 		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o);
 			s && s->sensorLabel != "FUSED")
-			allScans.push_back({at, t, o->sensorLabel});
+			allScans.push_back({at, t, o->timestamp, o->sensorLabel});
 		else if (std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o))
-			allStereos.push_back({at, t, o->sensorLabel});
+			allStereos.push_back({at, t, o->timestamp, o->sensorLabel});
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o))
-			odometry.emplace_back(t, odo->odometry);
+			odometry.add(odo->timestamp, odo->odometry);
 	};
 	lvf::common::RawlogReader reader(path);
 	for (size_t i = 0; auto entry = reader.next(); i++)
@@ -100,11 +102,10 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 	out.stereoPairs = stereos.size();
 
 	// In time order (stable: the first in the file of equal times), so that
-	// a scan's nearest pair and latest odometry are a binary search away
-	// (a real log holds tens of thousands of each).
+	// a scan's nearest pair is a binary search away (a real log holds tens of
+	// thousands).
 	auto byTime = [](const auto& a, const auto& b) { return a.t < b.t; };
 	std::stable_sort(stereos.begin(), stereos.end(), byTime);
-	std::stable_sort(odometry.begin(), odometry.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 	for (const auto& s : scans)
 	{
 		// The pair nearest in time; of two as near, the earlier.
@@ -121,11 +122,7 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 		f.scanAt = s.at;
 		f.stereoAt = best->at;
 		f.stereoDelay = best->t - s.t;
-		f.odometry = poseAtEntry[s.at.entry];
-		// The latest odometry reading not after the scan.
-		auto next = std::upper_bound(odometry.begin(), odometry.end(), s.t + 1e-6,
-			[](double t, const auto& reading) { return t < reading.first; });
-		if (next != odometry.begin()) f.odometry = std::prev(next)->second;
+		f.odometry = odometry.latestNotAfter(s.stamp).value_or(poseAtEntry[s.at.entry]);
 		out.frames.push_back(f);
 	}
 	return out;

@@ -114,7 +114,7 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argStereoLabel("", "stereo-label", "With the stereo pairs of this sensor (sensorLabel; default: the log's only stereo camera)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
 	TCLAP::ValueArg<int> argEvalEvery("", "eval-every", "Add the evaluation picture (EVAL) of every N-th frame to the output rawlog; 0: none (default 1: every frame; a picture is about the size of a stereo pair)", false, 1, "N", cmd);
-	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m] (default 0.05)", false, 0.05, "M", cmd);
+	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m], 0.005 to 5 (default 0.05)", false, 0.05, "M", cmd);
 	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
@@ -130,8 +130,11 @@ int run(int argc, char** argv)
 		return lvf::common::kExitOk;
 	}
 	if (!(argMaxDt.getValue() >= 0)) throw InputError("--max-time-diff", "", "must be >= 0");
-	if (!(argGridRes.getValue() > 0)) throw InputError("--grid-resolution", "", "must be > 0");
+	if (!(argGridRes.getValue() >= 0.005 && argGridRes.getValue() <= 5))	 // as lvf-map's grids
+		throw InputError("--grid-resolution", "", "must be in [0.005, 5]");
 	if (argEvalEvery.getValue() < 0) throw InputError("--eval-every", "", "must be >= 0");
+	if (argOutput.isSet() && std::filesystem::path(argOutput.getValue()).filename().empty())
+		throw InputError("--output", "", "names a folder, not a file (e.g. " + argOutput.getValue() + "out.rawlog)");
 	const auto evalEvery = static_cast<size_t>(argEvalEvery.getValue());
 	threads.apply();
 	lvf::registerAllClasses();
@@ -156,10 +159,9 @@ int run(int argc, char** argv)
 	std::string outputPath;
 	if (outName.empty())
 	{
-		outputFile = std::make_unique<lvf::common::StagedOutputFiles>(
-			mrpt::system::extractFileDirectory(argOutput.getValue()));
-		outputPath = outputFile->stage(mrpt::system::extractFileName(argOutput.getValue()) +
-			"." + mrpt::system::extractFileExtension(argOutput.getValue()));
+		const std::filesystem::path output(argOutput.getValue());
+		outputFile = std::make_unique<lvf::common::StagedOutputFiles>(output.parent_path().string());
+		outputPath = outputFile->stage(output.filename().string());
 	}
 	else
 		outputPath = files.stage(outName);

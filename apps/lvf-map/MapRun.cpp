@@ -1,6 +1,7 @@
 #include "MapRun.h"
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/OdometryReadings.h>
 #include <lvfusion/common/RawlogReader.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
@@ -33,10 +34,10 @@ MapRun loadMapRun(
 	// Sensory-frame layout: the action before a frame moves the robot to it.
 	mrpt::obs::CActionCollection::Ptr pendingActions;
 	mrpt::poses::CPose2D deadReckoning, lastStepOdometry;
-	// Observations layout: the odometry readings in file order (a frame's
-	// reading may come after its scan), and the steps whose odometry and
-	// action are taken from them once all are read.
-	std::vector<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose2D>> readings;
+	// Observations layout: the odometry readings (a frame's reading may come
+	// after its scan), and the steps whose odometry and action are taken from
+	// them once all are read.
+	lvf::common::OdometryReadings readings;
 	std::vector<size_t> stepsByReadings;
 
 	auto addFused = [&](const CObservation2DRangeScan::Ptr& fused) {
@@ -54,7 +55,7 @@ MapRun loadMapRun(
 	while (const auto entry = reader.next())
 	{
 		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(entry))
-			readings.emplace_back(odo->timestamp, odo->odometry);
+			readings.add(odo->timestamp, odo->odometry);
 		else if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(entry))
 		{
 			run.sensoryFrames = true;
@@ -105,14 +106,12 @@ MapRun loadMapRun(
 		}
 	}
 	const bool odometryReadings = !readings.empty();
-	mrpt::poses::CPose2D usedOdometry = odometryReadings ? readings.front().second : mrpt::poses::CPose2D();
+	mrpt::poses::CPose2D usedOdometry = odometryReadings ? readings.earliest() : mrpt::poses::CPose2D();
 	for (size_t i : stepsByReadings)
 	{
 		auto& step = run.steps[i];
 		const auto t = step.laser->timestamp;
-		step.odometry = usedOdometry;
-		for (const auto& [stamp, pose] : readings)	// the latest reading not after the scan
-			if (stamp <= t + std::chrono::microseconds(1)) step.odometry = pose;
+		step.odometry = readings.latestNotAfter(t).value_or(usedOdometry);
 		step.action = odometryAction(step.odometry - usedOdometry, obsOnlyModel, t);
 		usedOdometry = step.odometry;
 	}

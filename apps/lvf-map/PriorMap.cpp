@@ -43,7 +43,7 @@ void readSerialised(const std::string& path, T& object)
 
 std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::maps::CMultiMetricMap& map)
 {
-	if (!mrpt::system::fileExists(path)) throw InputError(path, "", "map file not found");
+	lvf::common::requireInputFile(path, "map file");
 	// Like pf-localization: the extension decides, a trailing .gz ignored.
 	const std::string ext = mrpt::system::lowerCase(mrpt::system::extractFileExtension(path, true));
 	static const std::set<std::string> images{"png", "jpg", "jpeg", "bmp", "pgm", "ppm", "tif", "tiff"};
@@ -68,8 +68,8 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 		return mrpt::format("%s (image, %.3f m per pixel, centred on the origin)", path.c_str(), imageResolution);
 	}
 	throw InputError(
-		path, "", "unknown map format '." + ext +
-			"': expected .gridmap(.gz), .simplemap(.gz) or an image (.png, .jpg, .bmp, .pgm)");
+		path, "", (ext.empty() ? std::string("no file extension to tell the map format") : "unknown map format '." + ext + "'") +
+			": expected .gridmap(.gz), .simplemap(.gz) or an image (.png, .jpg, .bmp, .pgm)");
 }
 
 mrpt::maps::CSimpleMap buildMapFromScans(const MapRun& run)

@@ -110,6 +110,7 @@ int run(int argc, char** argv)
 	if (!argStart.getValue().empty()) start = parsePoint(argStart.getValue(), "--start"), sources.start = "--start";
 	if (!argGoal.getValue().empty()) goal = parsePoint(argGoal.getValue(), "--goal"), sources.goal = "--goal";
 
+	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 
 	// The prior map, and where the particles start.
@@ -167,7 +168,7 @@ int run(int argc, char** argv)
 		// A start or goal the user gave must be usable; the run's own first
 		// and last poses may not be (then the summary says why there is no path).
 		auto where = [&](const TPoint2D& q, bool outside) {
-			return mrpt::format("(%.2f, %.2f) ", q.x, q.y) +
+			return mrpt::format(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6 ? "(%.2f, %.2f) " : "(%g, %g) ", q.x, q.y) +
 				(outside ? "is outside the " + p.name + " map"
 						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
 										p.name.c_str(), config.planner.robotRadius));
@@ -179,7 +180,6 @@ int run(int argc, char** argv)
 	}
 
 	// Outputs, staged until everything worked.
-	lvf::common::StagedOutputFiles files(argOutdir.getValue());
 	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
 	if (ownMap)
 	{

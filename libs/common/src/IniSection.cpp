@@ -19,8 +19,8 @@ std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 
 std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 {
+	requireInputFile(path, "configuration file");
 	std::ifstream in(path);
-	if (!in) throw InputError(path, "", "configuration file not found");
 	bool inSection = false;
 	int lineNumber = 0;
 	for (std::string line; std::getline(in, line);)

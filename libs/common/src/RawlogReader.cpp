@@ -8,7 +8,7 @@ namespace lvf::common
 {
 RawlogReader::RawlogReader(const std::string& path) : m_path(path)
 {
-	if (!mrpt::system::fileExists(path)) throw InputError(path, "", "input rawlog not found");
+	requireInputFile(path, "input rawlog");
 	m_file = std::make_unique<mrpt::io::CFileGZInputStream>(path);
 	m_archive = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(*m_file);
 }

@@ -1,3 +1,4 @@
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 
 #include <algorithm>
@@ -9,15 +10,25 @@ namespace fs = std::filesystem;
 namespace lvf::common
 {
 StagedOutputFiles::StagedOutputFiles(std::string outputDir)
-	: m_outputDir(std::move(outputDir))
+	: m_outputDir(outputDir.empty() ? "." : std::move(outputDir))  // "" from a bare file name's folder
 {
-	fs::path out(m_outputDir);
+	if (fs::exists(m_outputDir) && !fs::is_directory(m_outputDir))
+		throw InputError(m_outputDir, "", "exists and is not a folder (the outputs go into a folder)");
+	// Absolute and normal, so that "." and "dir/" have a name and a parent.
+	fs::path out = fs::absolute(m_outputDir).lexically_normal();
 	if (out.filename().empty()) out = out.parent_path();  // "dir/" -> "dir"
-	// Beside the output folder, so that commit() is a same-filesystem rename.
-	m_stagingDir = (out.parent_path() /
-					("." + out.filename().string() + ".partial-" +
-					 std::to_string(::getpid())))
+	// On the output folder's filesystem, so that commit() is a rename: inside
+	// it if it exists (its parent need not be writable: the current folder,
+	// a home folder), else beside it, where it is to be made.
+	const std::string pid = std::to_string(::getpid());
+	m_stagingDir = (fs::is_directory(out) ? out / (".lvf-partial-" + pid)
+										  : out.parent_path() / ("." + out.filename().string() + ".partial-" + pid))
 					   .string();
+	// Made now, so that an output folder that cannot be made is reported
+	// before the run's work rather than after it.
+	std::error_code ec;
+	fs::create_directories(m_stagingDir, ec);
+	if (ec) throw InputError(m_outputDir, "", "cannot write the outputs here: " + ec.message());
 }
 
 StagedOutputFiles::~StagedOutputFiles()

@@ -22,8 +22,8 @@ double median(std::vector<double> v)
 
 std::vector<StampedPose> readPoseFile(const std::string& path)
 {
+	lvf::common::requireInputFile(path, "pose file");
 	std::ifstream in(path);
-	if (!in) throw lvf::common::InputError(path, "", "pose file not found");
 	std::vector<StampedPose> poses;
 	std::string line;
 	for (size_t n = 1; std::getline(in, line); n++)

@@ -9,8 +9,8 @@ namespace lvf::metrics
 {
 std::vector<TruthScan> readTruthScans(const std::string& path)
 {
+	lvf::common::requireInputFile(path, "truth scan file");
 	std::ifstream in(path);
-	if (!in) throw lvf::common::InputError(path, "", "cannot open truth scan file");
 	std::vector<TruthScan> out;
 	std::string line;
 	std::getline(in, line);	 // header

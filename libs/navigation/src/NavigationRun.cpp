@@ -20,6 +20,8 @@ Sensing parseSensing(const std::string& name, const std::string& source)
 
 namespace
 {
+constexpr double kMaxDistanceOutsideWorld = 1000;	// [m]
+
 /** Checks a scenario can be run at all; fills `m` and returns false if not. */
 bool checkScenario(const NavigationScenario& s, const WorldCollision& collision, NavigationMetrics& m)
 {
@@ -29,6 +31,18 @@ bool checkScenario(const NavigationScenario& s, const WorldCollision& collision,
 		m.detail = "start " + s.start.asString() + " or target " + s.target.asString() + " is not finite";
 		return false;
 	}
+	// The robot's grids cover the world, the start and the target (gridFor):
+	// a point far off would ask for more cells than memory holds.
+	double xMin, xMax, yMin, yMax;
+	s.world.footprintBounds(xMin, xMax, yMin, yMax, kMaxDistanceOutsideWorld);
+	for (const auto& [what, p] : {std::pair{"start", mrpt::math::TPoint2D(s.start)}, std::pair{"target", s.target}})
+		if (p.x < xMin || p.x > xMax || p.y < yMin || p.y > yMax)
+		{
+			m.outcome = Outcome::InvalidPose;
+			m.detail = mrpt::format("the %s (%g, %g) lies more than %.0f m outside the world", what, p.x, p.y,
+				kMaxDistanceOutsideWorld);
+			return false;
+		}
 	if (const auto c = collision.clearance(mrpt::math::TPoint2D(s.start)); c.distance < 0)
 	{
 		m.outcome = Outcome::StartInCollision;

@@ -421,8 +421,8 @@ World parseWorld(const std::string& yamlText, const std::string& sourceName)
 
 World loadWorldFile(const std::string& path)
 {
+	lvf::common::requireInputFile(path, "world file");
 	std::ifstream in(path);
-	if (!in) throw InputError(path, "", "cannot open world file");
 	std::stringstream text;
 	text << in.rdbuf();
 	return parseWorld(text.str(), path);

@@ -24,4 +24,10 @@ class InputError : public std::runtime_error
 	std::string m_source;
 };
 
+/** Throws InputError naming `path` unless it is a file that can be opened
+ * for reading: "`what` not found", "a folder, not a `what`" or "cannot read
+ * it: reason". (A folder opens as an empty stream, so reading it would
+ * look like an empty file.) */
+void requireInputFile(const std::string& path, const std::string& what);
+
 }  // namespace lvf::common
