@@ -168,13 +168,14 @@ int run(int argc, char** argv)
 	{
 		const auto& st = options.stereo;
 		std::cout << mrpt::format(
-			"%s: world '%s' (%s): %zu boxes, %zu frames in %.2f s\n"
+			"%s: world '%s'%s: %zu boxes, %zu frame%s in %.2f s\n"
 			"  laser %zu rays over %.0f deg; stereo %dx%d, baseline %.3f m\n"
 			"  hidden bearings (in camera view, truth nearer than laser by > "
 			"0.15 m): %zu of %zu in view (%.1f per frame)\n"
 			"  wrote %s (%s, %s) and ground truth %s_* in %s\n",
-			kApp.c_str(), world.name.c_str(), world.sourceFile.c_str(),
-			world.boxes.size(), summary.frames, timer.Tac(),
+			kApp.c_str(), world.name.c_str(),
+			world.sourceFile.empty() ? " (seeded)" : (" (" + world.sourceFile + ")").c_str(),
+			world.boxes.size(), summary.frames, summary.frames == 1 ? "" : "s", timer.Tac(),
 			options.laser.rayCount(), options.laser.apertureDeg, st.ncols,
 			st.nrows, st.baseline, summary.hidden, summary.inView,
 			static_cast<double>(summary.hidden) / std::max<size_t>(1, summary.frames),
