@@ -61,6 +61,8 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	ASSERT_EQ(r.status, 0) << r.err;
 	EXPECT_EQ(r.err, "");
 	EXPECT_NE(r.out.find("recall"), std::string::npos) << "truth scans beside the sample are used";
+	EXPECT_NE(r.out.find("whose obstacle both cameras see (two_cubes_seen_truth_scans.csv)"), std::string::npos)
+		<< "and the seen truth beside them\n" << r.out;
 	for (const char* f : {"two_cubes_fused.rawlog", "two_cubes_laser.gridmap.gz", "two_cubes_fused.gridmap.gz",
 						  "two_cubes_grids.png", "two_cubes_frames.csv"})
 		EXPECT_TRUE(fs::exists(m_dir / "out" / f)) << f;

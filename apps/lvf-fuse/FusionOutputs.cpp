@@ -54,9 +54,9 @@ FusionOutputs::FusionOutputs(
 	m_csv << "frame,timestamp,segments,noise_std,texture_gate,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"
 			 "visual_points,grown_points,remembered_points,shortened_bearings,bridged_bearings,fell_back,t_lines_ms,t_model_ms,t_rectify_ms,"
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
-			 "hidden_range_error_m\n";
+			 "hidden_range_error_m,seen_hidden,seen_recall\n";
 	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
-	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged\n";
+	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged,seen_truth_m\n";
 }
 
 namespace
@@ -83,7 +83,8 @@ void FusionOutputs::addBearings(
 						  << int(truth->hidden[i]);
 		else
 			m_bearingsCsv << ",,";
-		m_bearingsCsv << ',' << int(i < r.bridged.size() && r.bridged[i]) << '\n';
+		m_bearingsCsv << ',' << int(i < r.bridged.size() && r.bridged[i]) << ','
+					  << (truth && !truth->seenRanges.empty() ? rangeField(truth->seenRanges[i]) : std::string()) << '\n';
 	}
 }
 
@@ -111,11 +112,11 @@ void FusionOutputs::add(
 	{
 		const auto& s = truth->score;
 		m_csv << mrpt::format(
-			",%zu,%zu,%.4f,%.4f,%.4f\n", s.inView, s.hidden, s.recall(), s.phantomRate(),
-			s.hiddenRangeErrorMedian);
+			",%zu,%zu,%.4f,%.4f,%.4f", s.inView, s.hidden, s.recall(), s.phantomRate(), s.hiddenRangeErrorMedian);
+		m_csv << (truth->seenRanges.empty() ? std::string(",,\n") : mrpt::format(",%zu,%.4f\n", s.seenHidden, s.seenRecall()));
 	}
 	else
-		m_csv << ",,,,,\n";
+		m_csv << ",,,,,,,\n";
 	addBearings(frame, laser, r, truth);
 }
 

@@ -27,6 +27,7 @@ mrpt::obs::CObservationImage::Ptr evaluationImage(
 struct FrameTruth
 {
 	std::vector<float> ranges;	//!< per bearing [m], inf: nothing in the band
+	std::vector<float> seenRanges;	//!< the same of what both cameras see; empty: not known
 	std::vector<bool> inView, hidden;
 	lvf::metrics::FusionScore score;
 };

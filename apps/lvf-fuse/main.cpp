@@ -53,19 +53,42 @@ std::string truthScansFor(const std::string& input, const std::string& given)
 	return mrpt::system::fileExists(beside) ? beside : "";
 }
 
-/** DESIGN.md's figures for one frame, if a truth scan has its time stamp
- * and its bearings. */
-std::optional<lvf::apps::FrameTruth> scoreAgainstTruth(
-	const std::vector<lvf::metrics::TruthScan>& truth, const lvf::apps::FusionFrame& f,
-	const CLaserStereoFusion::Result& r, const CLaserStereoFusion::TOptions& options)
+/** NAME_seen_truth_scans.csv beside NAME_truth_scans.csv if it exists
+ * (lvf-simulate writes it: what both cameras see), else none. */
+std::string seenTruthScansFor(const std::string& truthPath)
+{
+	const std::string suffix = "_truth_scans.csv";
+	if (truthPath.size() < suffix.size() || truthPath.compare(truthPath.size() - suffix.size(), suffix.size(), suffix))
+		return "";
+	const std::string seen = truthPath.substr(0, truthPath.size() - suffix.size()) + "_seen" + suffix;
+	return mrpt::system::fileExists(seen) ? seen : "";
+}
+
+/** The truth scan of a frame's time stamp with the frame's bearings, if any. */
+const lvf::metrics::TruthScan* truthScanOf(
+	const std::vector<lvf::metrics::TruthScan>& truth, const lvf::apps::FusionFrame& f)
 {
 	const auto* t = lvf::metrics::findTruthScan(truth, mrpt::Clock::toDouble(f.scan->timestamp));
-	if (!t || t->ranges.size() != f.scan->getScanSize()) return std::nullopt;
+	return t && t->ranges.size() == f.scan->getScanSize() ? t : nullptr;
+}
+
+/** DESIGN.md's figures for one frame, if a truth scan has its time stamp
+ * and its bearings; with the seen truth (may be empty) also the recall over
+ * what both cameras see. */
+std::optional<lvf::apps::FrameTruth> scoreAgainstTruth(
+	const std::vector<lvf::metrics::TruthScan>& truth, const std::vector<lvf::metrics::TruthScan>& seenTruth,
+	const lvf::apps::FusionFrame& f, const CLaserStereoFusion::Result& r, const CLaserStereoFusion::TOptions& options)
+{
+	const auto* t = truthScanOf(truth, f);
+	if (!t) return std::nullopt;
+	const auto* seen = truthScanOf(seenTruth, f);
 	lvf::apps::FrameTruth ft;
 	ft.ranges = t->ranges;
+	if (seen) ft.seenRanges = seen->ranges;
 	ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
 	ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
-	ft.score = lvf::metrics::scoreFusedScan(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
+	ft.score = lvf::metrics::scoreFusedScan(
+		*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax, seen ? &seen->ranges : nullptr);
 	return ft;
 }
 
@@ -144,6 +167,9 @@ int run(int argc, char** argv)
 	const std::string truthPath = truthScansFor(input, argTruth.getValue());
 	const auto truth = truthPath.empty() ? std::vector<lvf::metrics::TruthScan>{}
 										 : lvf::metrics::readTruthScans(truthPath);
+	const std::string seenTruthPath = seenTruthScansFor(truthPath);
+	const auto seenTruth = seenTruthPath.empty() ? std::vector<lvf::metrics::TruthScan>{}
+												 : lvf::metrics::readTruthScans(seenTruthPath);
 	mrpt::system::CTicTac timer;
 	auto in = lvf::apps::planRawlogFrames(
 		input, argMaxDt.getValue(), {argLaserLabel.getValue(), argStereoLabel.getValue()});
@@ -206,7 +232,7 @@ int run(int argc, char** argv)
 		laserAlone += r.fellBackToLaser;  // bad frames, a suspect calibration, no valid range
 		timeSum += r.times.total();
 
-		const auto frameTruth = scoreAgainstTruth(truth, f, r, options);
+		const auto frameTruth = scoreAgainstTruth(truth, seenTruth, f, r, options);
 		if (frameTruth) total.add(frameTruth->score), scored++;
 		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
 		lvf::apps::FrameStream::Results results{r.fused};
@@ -245,6 +271,10 @@ int run(int argc, char** argv)
 				"of %zu in view, median range error %.3f m (hidden %.3f m)\n",
 				truthPath.c_str(), scored, total.recall(), total.hidden, total.phantomRate(),
 				total.inView, total.rangeErrorMedian, total.hiddenRangeErrorMedian);
+		if (scored && !seenTruth.empty())
+			std::cout << mrpt::format(
+				"  recall %.3f of the %zu of them whose obstacle both cameras see (%s)\n", total.seenRecall(),
+				total.seenHidden, std::filesystem::path(seenTruthPath).filename().c_str());
 		if (stream.externalImages())
 			std::cout << "  " << stream.externalImages() << " images read from " << stream.externalImagesFolder()
 					  << " (the output rawlog names them by absolute path)\n";

@@ -18,7 +18,26 @@ GroundTruthWriter::GroundTruthWriter(
 	m_poses.open(files.stage(name + "_gt_poses.txt"));
 	m_poses << "# ground-truth robot poses: frame timestamp[s] x[m] y[m] yaw[rad]\n";
 	m_truth.open(files.stage(name + "_truth_scans.csv"));
+	m_seenTruth.open(files.stage(name + "_seen_truth_scans.csv"));
 }
+
+namespace
+{
+/** One frame's row of a truth scan file; the header before frame 0. */
+void writeScanRow(
+	std::ostream& out, const lvf::simulation::CStereoLaserSimulator::Frame& f, const std::vector<float>& ranges)
+{
+	if (f.index == 0)
+	{
+		out << "frame,timestamp";
+		for (size_t i = 0; i < ranges.size(); i++) out << mrpt::format(",b%.2f", mrpt::RAD2DEG(f.scan->getScanAngle(i)));
+		out << "\n";
+	}
+	out << f.index << mrpt::format(",%.6f", mrpt::Clock::toDouble(f.timestamp));
+	for (float r : ranges) out << (std::isfinite(r) ? mrpt::format(",%.4f", r) : std::string(",inf"));
+	out << "\n";
+}
+}  // namespace
 
 void GroundTruthWriter::add(
 	const lvf::simulation::CStereoLaserSimulator::Frame& f)
@@ -28,17 +47,8 @@ void GroundTruthWriter::add(
 		mrpt::Clock::toDouble(f.timestamp), f.truePose.x(), f.truePose.y(),
 		f.truePose.phi());
 
-	if (f.index == 0)
-	{
-		m_truth << "frame,timestamp";
-		for (size_t i = 0; i < f.truthScan.size(); i++)
-			m_truth << mrpt::format(",b%.2f", mrpt::RAD2DEG(f.scan->getScanAngle(i)));
-		m_truth << "\n";
-	}
-	m_truth << f.index << mrpt::format(",%.6f", mrpt::Clock::toDouble(f.timestamp));
-	for (float r : f.truthScan)
-		m_truth << (std::isfinite(r) ? mrpt::format(",%.4f", r) : std::string(",inf"));
-	m_truth << "\n";
+	writeScanRow(m_truth, f, f.truthScan);
+	writeScanRow(m_seenTruth, f, f.seenTruthScan);
 
 	if (m_writeDepth)
 		cv::imwrite(
@@ -58,6 +68,7 @@ void GroundTruthWriter::close()
 {
 	m_poses.close();
 	m_truth.close();
+	m_seenTruth.close();
 }
 
 }  // namespace lvf::apps

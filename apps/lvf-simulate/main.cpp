@@ -144,7 +144,7 @@ int run(int argc, char** argv)
 	lvf::common::ProgressBar progress("simulating", sim.frameCount());
 	for (size_t k = 0; k < sim.frameCount(); k++)
 	{
-		const auto frame = sim.simulateNextFrame(argDepth.getValue());
+		const auto frame = sim.simulateNextFrame(true);  // the depth for the seen truth, written if asked
 		rawlog.append({frame.timestamp, frame.odometry, {frame.scan, frame.stereo}});
 		truth.add(frame);
 		const auto inView = lvf::metrics::bearingsInView(

@@ -72,6 +72,8 @@ void FusionScore::add(const FusionScore& o)
 	recalled += o.recalled;
 	phantoms += o.phantoms;
 	withTruth += o.withTruth;
+	seenHidden += o.seenHidden;
+	seenRecalled += o.seenRecalled;
 	errors.insert(errors.end(), o.errors.begin(), o.errors.end());
 	hiddenErrors.insert(hiddenErrors.end(), o.hiddenErrors.begin(), o.hiddenErrors.end());
 	rangeErrorMedian = median(errors);
@@ -81,7 +83,7 @@ void FusionScore::add(const FusionScore& o)
 FusionScore scoreFusedScan(
 	const mrpt::obs::CObservation2DRangeScan& laser,
 	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
-	const std::vector<bool>& inView, double maxRange)
+	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth)
 {
 	FusionScore s;
 	const auto hidden = hiddenBearings(laser, truth, inView);
@@ -104,6 +106,13 @@ FusionScore scoreFusedScan(
 		{
 			s.hidden++;
 			if (f <= t + 0.10) s.recalled++;
+			// Seen: both cameras see an obstacle point as near as the truth
+			// (within recall's 0.10 m: the seen scan bins points by bearing).
+			if (seenTruth && (*seenTruth)[i] <= t + 0.10)
+			{
+				s.seenHidden++;
+				if (f <= t + 0.10) s.seenRecalled++;
+			}
 			s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
 		}
 	}

@@ -50,7 +50,10 @@ CStereoLaserSimulator::CStereoLaserSimulator(World world, const TOptions& option
 	  m_geometry(std::make_shared<const WorldGeometry>(*m_world)),
 	  m_laser(std::make_shared<const SimulatedLaser>(options.laser)),
 	  m_stereo(std::make_shared<const SimulatedStereoRig>(options.stereo)),
-	  m_odometry(std::make_shared<SimulatedOdometry>(options.odometry, options.seed))
+	  m_odometry(std::make_shared<SimulatedOdometry>(options.odometry, options.seed)),
+	  m_seenTruth(std::make_shared<const StereoSeenTruth>(
+		  options.stereo.stereoCamera(), options.stereo.leftCameraPose(), options.stereo.rightCameraPose(),
+		  HeightBand{m_world->robot.obstacleMinHeight, m_world->robot.height}))
 {
 }
 
@@ -89,6 +92,7 @@ CStereoLaserSimulator::Frame CStereoLaserSimulator::simulateAt(
 		f.leftDepth = images.leftDepth;
 	}
 	f.truthScan = truthScan(*m_world, robot, *f.scan);
+	if (withStereo && withDepth) f.seenTruthScan = m_seenTruth->scan(f.leftDepth, *f.scan);
 	return f;
 }
 

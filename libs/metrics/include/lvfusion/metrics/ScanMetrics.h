@@ -39,17 +39,23 @@ namespace lvf::metrics
 struct FusionScore
 {
 	size_t inView = 0, hidden = 0, recalled = 0, phantoms = 0, withTruth = 0;
+	/** With a seen truth scan (StereoSeenTruth.h): the hidden bearings whose
+	 * obstacle both cameras see, and of those the recalled. */
+	size_t seenHidden = 0, seenRecalled = 0;
 	double rangeErrorMedian = 0;  //!< median |fused - truth| where truth exists [m]
 	double hiddenRangeErrorMedian = 0;	//!< same, over hidden bearings only [m]
 	double recall() const { return hidden ? double(recalled) / double(hidden) : 1.0; }
 	double phantomRate() const { return inView ? double(phantoms) / double(inView) : 0.0; }
+	double seenRecall() const { return seenHidden ? double(seenRecalled) / double(seenHidden) : 1.0; }
 	/** Adds another frame's counts (medians are recomputed from all errors). */
 	void add(const FusionScore& other);
 	std::vector<float> errors, hiddenErrors;
 };
 
+/** `seenTruth`, if given: the truth scan of what both cameras see, for
+ * seenHidden and seenRecalled. */
 FusionScore scoreFusedScan(
 	const mrpt::obs::CObservation2DRangeScan& laser,
 	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
-	const std::vector<bool>& inView, double maxRange);
+	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth = nullptr);
 }  // namespace lvf::metrics

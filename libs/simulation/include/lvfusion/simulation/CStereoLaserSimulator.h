@@ -10,6 +10,7 @@
 #include <lvfusion/simulation/SimulatedLaser.h>
 #include <lvfusion/simulation/SimulatedOdometry.h>
 #include <lvfusion/simulation/SimulatedStereoRig.h>
+#include <lvfusion/simulation/StereoSeenTruth.h>
 #include <lvfusion/simulation/World.h>
 #include <lvfusion/simulation/WorldGeometry.h>
 #include <mrpt/rtti/CObject.h>
@@ -56,6 +57,9 @@ class CStereoLaserSimulator : public mrpt::rtti::CObject
 		mrpt::obs::CObservationStereoImages::Ptr stereo;
 		std::vector<float> truthScan;  //!< per laser bearing, inf: nothing
 		cv::Mat1f leftDepth;  //!< when asked for: z in the left camera [m]
+		/** With the depth: the truth scan of what both cameras see
+		 * (StereoSeenTruth.h), inf: nothing seen. */
+		std::vector<float> seenTruthScan;
 	};
 
 	size_t frameCount() const { return m_world ? m_world->path.size() : 0; }
@@ -83,6 +87,7 @@ class CStereoLaserSimulator : public mrpt::rtti::CObject
 	std::shared_ptr<const SimulatedLaser> m_laser;
 	std::shared_ptr<const SimulatedStereoRig> m_stereo;
 	std::shared_ptr<SimulatedOdometry> m_odometry;
+	std::shared_ptr<const StereoSeenTruth> m_seenTruth;
 	size_t m_nextFrame = 0;
 };
 
