@@ -1,0 +1,220 @@
+// lvf-bench, fusion: the box room's frames through CLaserStereoFusion,
+// against OpenCV's StereoSGBM (3-way) and StereoBM over the whole image with
+// a disparity range covering [z_min, z_max], each turned into the same fused
+// scan: time per frame (benchmarks), the median time per frame of each stage
+// of each method, and recall / phantom rate / range error of each against
+// the truth scans (printed after the benchmarks, FusionBenchmarks.h).
+
+#include "FusionBenchmarks.h"
+#include "StageMedians.h"
+
+#include <benchmark/benchmark.h>
+#include <lvfusion/depth/DenseStereoBaseline.h>
+#include <lvfusion/fusion/CLaserStereoFusion.h>
+#include <lvfusion/metrics/ScanMetrics.h>
+#include <lvfusion/simulation/CStereoLaserSimulator.h>
+#include <lvfusion/simulation/WorldLoader.h>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+using namespace lvf::simulation;
+
+namespace lvf::bench
+{
+namespace
+{
+/** The box room's frames, simulated once, with what every method needs. */
+struct FusionFixture
+{
+	std::vector<CStereoLaserSimulator::Frame> frames;
+	std::vector<cv::Mat1b> left, right;	 // rectified grey
+	lvf::evaluation::RectifiedGeometry geometry;
+	lvf::fusion::CLaserStereoFusion::TOptions options;
+
+	FusionFixture()
+	{
+		World world = loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
+		CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
+		lvf::evaluation::RectifiedStereo stereo;
+		for (size_t k = 0; k < sim.frameCount(); k++)
+		{
+			frames.push_back(sim.simulateNextFrame(false));
+			stereo.prepare(*frames.back().stereo, "frame");
+			cv::Mat1b l, r;
+			stereo.rectify(*frames.back().stereo, l, r);
+			left.push_back(l.clone());
+			right.push_back(r.clone());
+		}
+		geometry = stereo.geometry();
+	}
+	static FusionFixture& get()
+	{
+		static FusionFixture f;
+		return f;
+	}
+
+	/** Fused scan of frame k by dense matching; with `times`, the time of
+	 * its two stages (matching, disparity -> fused scan) recorded as `name`. */
+	mrpt::obs::CObservation2DRangeScan::Ptr dense(
+		size_t k, lvf::depth::DenseMatcher m, lvf::bench::StageMedians* times = nullptr,
+		const std::string& name = {}) const
+	{
+		using Clock = std::chrono::steady_clock;
+		auto ms = [](Clock::time_point a, Clock::time_point b) {
+			return std::chrono::duration<double, std::milli>(b - a).count();
+		};
+		const auto t0 = Clock::now();
+		const auto d = lvf::depth::denseDisparity(left[k], right[k], geometry, options.depth.zMin, m);
+		const auto t1 = Clock::now();
+		const auto points = lvf::depth::disparityToPoints(
+			d, geometry, options.band, options.depth.zMin, options.depth.zMax, options.depth.pixelStride);
+		const lvf::fusion::ScanFusion fusion(options.fusion);
+		auto fused = lvf::fusion::ScanFusion::fuse(*frames[k].scan, fusion.visualRanges(*frames[k].scan, points));
+		if (times)
+		{
+			times->add(name, "matching", ms(t0, t1));
+			times->add(name, "to_scan", ms(t1, Clock::now()));
+		}
+		return fused;
+	}
+};
+
+void BM_Fusion_BoxRoom(benchmark::State& state)
+{
+	auto& f = FusionFixture::get();
+	lvf::fusion::CLaserStereoFusion fusion(f.options);
+	size_t k = 0;
+	for (auto _ : state)
+	{
+		const auto& frame = f.frames[k++ % f.frames.size()];
+		benchmark::DoNotOptimize(fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused);
+	}
+}
+
+template <lvf::depth::DenseMatcher M>
+void BM_Dense_BoxRoom(benchmark::State& state)
+{
+	auto& f = FusionFixture::get();
+	size_t k = 0;
+	for (auto _ : state) benchmark::DoNotOptimize(f.dense(k++ % f.frames.size(), M));
+}
+void BM_SGBM_BoxRoom(benchmark::State& s) { BM_Dense_BoxRoom<lvf::depth::DenseMatcher::SemiGlobal>(s); }
+void BM_BM_BoxRoom(benchmark::State& s) { BM_Dense_BoxRoom<lvf::depth::DenseMatcher::Block>(s); }
+
+BENCHMARK(BM_Fusion_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_SGBM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_BM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+const std::string kFusionName = "fusion (this paper)";
+const std::string kSgbmName = "StereoSGBM 3-way";
+const std::string kBmName = "StereoBM";
+
+}  // namespace
+
+void printStageMedians(int passes)
+{
+	auto& f = FusionFixture::get();
+	// The fusion as configured; with the model evaluated over the whole
+	// image (the paper's way), which the faster grid evaluation replaces;
+	// with every match searched at full resolution (no coarse-to-fine).
+	auto wholeImage = f.options;
+	wholeImage.evaluateSearchGridOnly = false;
+	auto fullResolution = f.options;
+	fullResolution.depth.coarseToFine = false;
+	// And with each option that ships off the other way (what it costs).
+	auto shifted = f.options;
+	shifted.depth.shiftedWindows = !shifted.depth.shiftedWindows;
+	auto subpixel = f.options;
+	subpixel.depth.subpixelIterations = subpixel.depth.subpixelIterations > 0 ? 0 : 2;
+	auto memory = f.options;
+	memory.memory.maxTravel = memory.memory.maxTravel > 0 ? 0 : 1.5;
+	auto nearestFirst = f.options;
+	nearestFirst.depth.nearestFirstLevels = nearestFirst.depth.nearestFirstLevels > 0 ? 0 : 2;
+	const std::vector<std::pair<std::string, lvf::fusion::CLaserStereoFusion::TOptions>> variants{
+		{kFusionName, f.options}, {"fusion, whole-image eval", wholeImage},
+		{"fusion, full-res search", fullResolution},
+		{shifted.depth.shiftedWindows ? "fusion, shifted windows on" : "fusion, shifted windows off", shifted},
+		{subpixel.depth.subpixelIterations > 0 ? "fusion, sub-pixel LK on" : "fusion, sub-pixel LK off", subpixel},
+		{memory.memory.maxTravel > 0 ? "fusion, point memory on" : "fusion, point memory off", memory},
+		{nearestFirst.depth.nearestFirstLevels > 0 ? "fusion, nearest first on" : "fusion, nearest first off",
+			nearestFirst}};
+	std::vector<lvf::fusion::CLaserStereoFusion> fusions;
+	for (const auto& v : variants) fusions.emplace_back(v.second);
+	// Every method above on one thread; the fusion as configured and SGBM
+	// (which runs its rows on OpenCV's threads too) also on every core, for
+	// what a robot's computer gives them.
+	const int cores = cv::getNumberOfCPUs();
+	const std::string threadsLabel = ", " + std::to_string(cores) + " threads";
+	const std::string fusionOnCores = "fusion" + threadsLabel, sgbmOnCores = kSgbmName + threadsLabel;
+	lvf::fusion::CLaserStereoFusion parallelFusion(f.options);
+	auto onCores = [&](auto run) {
+		cv::setNumThreads(cores);
+		run();
+		cv::setNumThreads(1);
+	};
+	lvf::bench::StageMedians medians;
+	auto addFusionTimes = [&](const std::string& name, const lvf::fusion::CLaserStereoFusion::StageTimes& t) {
+		for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model}, {"rectify", t.rectify},
+				 {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
+			medians.add(name, stage, ms);
+	};
+	for (int pass = 0; pass < passes; pass++)
+		for (size_t k = 0; k < f.frames.size(); k++)
+		{
+			const auto& frame = f.frames[k];
+			for (size_t i = 0; i < fusions.size(); i++)
+				addFusionTimes(variants[i].first, fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
+			f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName);
+			f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName);
+			if (cores > 1)
+				onCores([&] {
+					addFusionTimes(fusionOnCores,
+						parallelFusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
+					f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, sgbmOnCores);
+				});
+		}
+	std::cout << "\nMedian time per frame and stage [ms] on the box room (" << passes << " x "
+			  << f.frames.size() << " frames, " << f.left.front().cols << "x" << f.left.front().rows
+			  << ", one thread unless said):\n";
+	medians.print(std::cout, kSgbmName);
+	if (cores > 1)
+		std::cout << std::fixed << std::setprecision(2) << "  on " << cores << " threads: the fusion "
+				  << medians.medianTotal(kFusionName) / medians.medianTotal(fusionOnCores)
+				  << "x its single-thread speed, SGBM "
+				  << medians.medianTotal(kSgbmName) / medians.medianTotal(sgbmOnCores)
+				  << "x; the fusion "
+				  << medians.medianTotal(sgbmOnCores) / medians.medianTotal(fusionOnCores)
+				  << "x faster than SGBM\n";
+}
+
+void printAccuracy()
+{
+	auto& f = FusionFixture::get();
+	lvf::fusion::CLaserStereoFusion fusion(f.options);
+	std::map<std::string, lvf::metrics::FusionScore> scores;
+	for (size_t k = 0; k < f.frames.size(); k++)
+	{
+		const auto& frame = f.frames[k];
+		const auto inView = lvf::metrics::bearingsInView(
+			*frame.scan, frame.truthScan, *frame.stereo, f.options.band, f.options.depth.zMax);
+		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) {
+			return lvf::metrics::scoreFusedScan(*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax);
+		};
+		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused));
+		scores[kSgbmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
+		scores[kBmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::Block)));
+		scores["laser alone"].add(score(*frame.scan));
+	}
+	std::cout << "\nAccuracy on the box room (" << f.frames.size()
+			  << " frames, against the simulator's truth scans):\n";
+	for (const auto& [name, s] : scores)
+		std::cout << std::fixed << std::setprecision(3) << "  " << std::setw(22) << std::left << name
+				  << " recall " << s.recall() << "  phantom rate " << s.phantomRate()
+				  << "  median range error " << s.rangeErrorMedian << " m (hidden "
+				  << s.hiddenRangeErrorMedian << " m)\n";
+}
+
+}  // namespace lvf::bench
