@@ -3,7 +3,8 @@
 # in share/doc/lvfusion/measurements.md were judged: whether their fused
 # rawlogs are the same byte for byte, and if not, each one's recall and
 # phantom bearings summed per set (NAME_frames.csv's in_view, hidden, recall,
-# phantom_rate columns), plus its mean search time per frame.
+# phantom_rate columns; seen_hidden and seen_recall where the inputs have
+# seen truth scans), plus its mean search time per frame.
 #   usage: scripts/fusion-ab.sh OLD_LVF_FUSE NEW_LVF_FUSE [WORKDIR]
 #   LVF_AB_ROOMS="201 202 ..."   seeded rooms (default 201-230, never tuned on)
 #   LVF_AB_CONFIG=FILE.ini       --config for both binaries
@@ -62,7 +63,10 @@ for side in old new; do
       views = $col["in_view"]; hidden = $col["hidden"]
       v[set] += views; h[set] += hidden; t[set] += $col["t_search_ms"]; f[set]++
       r[set] += int($col["recall"] * hidden + 0.5); p[set] += int($col["phantom_rate"] * views + 0.5)
+      if ("seen_hidden" in col && $col["seen_hidden"] != "") {  # both cameras see the obstacle (StereoSeenTruth.h)
+        sh[set] += $col["seen_hidden"]; sr[set] += int($col["seen_recall"] * $col["seen_hidden"] + 0.5)
+      }
     }
-    END { for (s in f) printf "%s %-14s recalled %5d of %5d hidden, %4d phantom of %5d in view, search %.2f ms a frame\n",
-          side, s, r[s], h[s], p[s], v[s], t[s] / f[s] }' "$work/$side"/*/*_frames.csv | sort -k2
+    END { for (s in f) printf "%s %-14s recalled %5d of %5d hidden (%5d of %5d seen), %4d phantom of %5d in view, search %.2f ms a frame\n",
+          side, s, r[s], h[s], sr[s], sh[s], p[s], v[s], t[s] / f[s] }' "$work/$side"/*/*_frames.csv | sort -k2
 done
