@@ -41,7 +41,8 @@ struct FusionFixture
 		lvf::evaluation::RectifiedStereo stereo;
 		for (size_t k = 0; k < sim.frameCount(); k++)
 		{
-			frames.push_back(sim.simulateNextFrame(false));
+			frames.push_back(sim.simulateNextFrame(true));	// the depth: for the seen truth scan
+			frames.back().leftDepth.release();
 			stereo.prepare(*frames.back().stereo, "frame");
 			cv::Mat1b l, r;
 			stereo.rectify(*frames.back().stereo, l, r);
@@ -201,7 +202,8 @@ void printAccuracy()
 		const auto inView = lvf::metrics::bearingsInView(
 			*frame.scan, frame.truthScan, *frame.stereo, f.options.band, f.options.depth.zMax);
 		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) {
-			return lvf::metrics::scoreFusedScan(*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax);
+			return lvf::metrics::scoreFusedScan(
+				*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax, &frame.seenTruthScan);
 		};
 		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused));
 		scores[kSgbmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
@@ -212,7 +214,8 @@ void printAccuracy()
 			  << " frames, against the simulator's truth scans):\n";
 	for (const auto& [name, s] : scores)
 		std::cout << std::fixed << std::setprecision(3) << "  " << std::setw(22) << std::left << name
-				  << " recall " << s.recall() << "  phantom rate " << s.phantomRate()
+				  << " recall " << s.recall() << " (seen by both cameras " << s.seenRecall() << ")  phantom rate "
+				  << s.phantomRate()
 				  << "  median range error " << s.rangeErrorMedian << " m (hidden "
 				  << s.hiddenRangeErrorMedian << " m)\n";
 }
