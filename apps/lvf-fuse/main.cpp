@@ -267,9 +267,9 @@ int run(int argc, char** argv)
 			in.entries, timeSum / double(in.frames.size()), threads.describe().c_str(), noOdometry.c_str());
 		if (scored)
 			std::cout << mrpt::format(
-				"  against %s (%zu frames): recall %.3f of %zu hidden bearings, phantom rate %.4f "
+				"  against %s (%zu frame%s): recall %.3f of %zu hidden bearings, phantom rate %.4f "
 				"of %zu in view, median range error %.3f m (hidden %.3f m)\n",
-				truthPath.c_str(), scored, total.recall(), total.hidden, total.phantomRate(),
+				truthPath.c_str(), scored, scored == 1 ? "" : "s", total.recall(), total.hidden, total.phantomRate(),
 				total.inView, total.rangeErrorMedian, total.hiddenRangeErrorMedian);
 		if (scored && !seenTruth.empty())
 			std::cout << mrpt::format(
