@@ -11,6 +11,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DQuat.h>
 #include <opencv2/core/utility.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include <functional>
 #include <sstream>
@@ -66,6 +67,16 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	for (const char* f : {"two_cubes_fused.rawlog", "two_cubes_laser.gridmap.gz", "two_cubes_fused.gridmap.gz",
 						  "two_cubes_grids.png", "two_cubes_frames.csv"})
 		EXPECT_TRUE(fs::exists(m_dir / "out" / f)) << f;
+	// The grids' picture: laser only | laser + vision, the same area each,
+	// under a 24 px line of labels; the floating cube the laser misses is
+	// occupied on the right where the left is free.
+	const cv::Mat grids = cv::imread((m_dir / "out" / "two_cubes_grids.png").string(), cv::IMREAD_GRAYSCALE);
+	ASSERT_FALSE(grids.empty());
+	const int panel = (grids.cols - 10) / 2;  // a 10 px gap between
+	const cv::Rect area(0, 24, panel, grids.rows - 24);
+	const cv::Mat laserPanel = grids(area), fusedPanel = grids(area + cv::Point(panel + 10, 0));
+	EXPECT_GT(cv::countNonZero((fusedPanel < 60) & (laserPanel > 150)), 20);
+	EXPECT_GE(std::max(area.height, area.width), 300) << "enlarged to be read";
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/two_cubes_fused.rawlog");
 	ASSERT_EQ(info.status, 0) << info.err;
 	const auto counts = labelCounts(info.out);
