@@ -1,5 +1,7 @@
 #include "FusionOutputs.h"
 
+#include <lvfusion/common/GridOutputs.h>
+
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -124,62 +126,17 @@ void FusionOutputs::close()
 {
 	m_csv.close();
 	m_bearingsCsv.close();
-	// The pictures of both over one and the same area (each grid grows with
-	// its own scans), so that one crop shows the same place in both.
-	const float xMin = std::min(m_laserGrid.getXMin(), m_fusedGrid.getXMin());
-	const float xMax = std::max(m_laserGrid.getXMax(), m_fusedGrid.getXMax());
-	const float yMin = std::min(m_laserGrid.getYMin(), m_fusedGrid.getYMin());
-	const float yMax = std::max(m_laserGrid.getYMax(), m_fusedGrid.getYMax());
-	cv::Mat panels[2];
-	for (int k = 0; k < 2; k++)
+	lvf::common::saveGrid(m_laserGrid, m_files.stage(m_name + "_laser.gridmap.gz"));
+	lvf::common::saveGrid(m_fusedGrid, m_files.stage(m_name + "_fused.gridmap.gz"));
+	std::vector<cv::Mat> pictures;
+	for (const auto& grid : lvf::common::onCommonExtent({&m_laserGrid, &m_fusedGrid}))
 	{
-		const auto& grid = k == 0 ? m_laserGrid : m_fusedGrid;
-		mrpt::io::CFileGZOutputStream out(
-			m_files.stage(m_name + (k == 0 ? "_laser" : "_fused") + ".gridmap.gz"));
-		mrpt::serialization::archiveFrom(out) << grid;
-		auto common = grid;
-		common.resizeGrid(xMin, xMax, yMin, yMax, 0.5f, false);
 		mrpt::img::CImage img;
-		common.getAsImage(img, false, true);
-		panels[k] = img.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY);
+		grid.getAsImage(img, false, true);	// north up
+		pictures.push_back(img.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY));
 	}
-	cv::imwrite(m_files.stage(m_name + "_grids.png"), sideBySide(panels[0], panels[1]));
-}
-
-cv::Mat FusionOutputs::sideBySide(const cv::Mat& laser, const cv::Mat& fused)
-{
-	// Both span the same area: crop both to what either has observed, with
-	// a margin, and enlarge that to a readable size, cells as square blocks.
-	const int rows = std::min(laser.rows, fused.rows), cols = std::min(laser.cols, fused.cols);
-	const cv::Scalar unknown = cv::Scalar::all(127);
-	cv::Rect seen;
-	for (const auto* img : {&laser, &fused})
-	{
-		cv::Mat grey;
-		if ((*img).channels() == 1) grey = (*img)(cv::Rect(0, 0, cols, rows));
-		else cv::cvtColor((*img)(cv::Rect(0, 0, cols, rows)), grey, cv::COLOR_BGR2GRAY);
-		cv::Mat observed = cv::abs(grey - unknown) > 2;
-		const cv::Rect r = cv::boundingRect(observed);
-		seen = seen.area() ? (seen | r) : r;
-	}
-	if (!seen.area()) seen = cv::Rect(0, 0, cols, rows);
-	const int margin = 10;
-	seen = cv::Rect(seen.x - margin, seen.y - margin, seen.width + 2 * margin, seen.height + 2 * margin) &
-		cv::Rect(0, 0, cols, rows);
-	const int scale = std::max(1, 480 / std::max(seen.width, seen.height));
-	const int labelHeight = 24, gap = 10;
-	cv::Mat out(seen.height * scale + labelHeight, 2 * seen.width * scale + gap, laser.type(), cv::Scalar::all(255));
-	const char* labels[2] = {"laser only", "laser + vision"};
-	for (int k = 0; k < 2; k++)
-	{
-		const cv::Mat& panel = k == 0 ? laser : fused;
-		const int x0 = k * (seen.width * scale + gap);
-		cv::Mat target = out(cv::Rect(x0, labelHeight, seen.width * scale, seen.height * scale));
-		cv::resize(panel(seen), target, target.size(), 0, 0, cv::INTER_NEAREST);
-		cv::putText(out, labels[k], {x0 + 4, labelHeight - 7}, cv::FONT_HERSHEY_SIMPLEX, 0.55, cv::Scalar::all(0), 1,
-			cv::LINE_AA);
-	}
-	return out;
+	cv::imwrite(m_files.stage(m_name + "_grids.png"),
+		lvf::common::sideBySide(pictures, {"laser only", "laser + vision"}));
 }
 
 }  // namespace lvf::apps

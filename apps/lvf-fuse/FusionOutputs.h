@@ -44,10 +44,6 @@ class FusionOutputs
 		const std::optional<FrameTruth>& truth);
 	void close();
 
-	/** The laser-only and the fused grid's pictures (the same area) side by
-	 * side, cropped to what was observed, enlarged and labelled. */
-	static cv::Mat sideBySide(const cv::Mat& laser, const cv::Mat& fused);
-
    private:
 	lvf::common::StagedOutputFiles& m_files;
 	std::string m_name;

@@ -1,8 +1,6 @@
 #include "GlobalGrids.h"
 
 #include <lvfusion/common/LaserRange.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
@@ -81,12 +79,6 @@ cv::Mat3b drawPathsOnGrid(
 	cv::drawMarker(picture, pixel(goal), {255, 0, 0}, cv::MARKER_CROSS, 9, 2);
 	cv::flip(picture, picture, 0);	// north up
 	return picture;
-}
-
-void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath)
-{
-	mrpt::io::CFileGZOutputStream out(gridmapPath);
-	mrpt::serialization::archiveFrom(out) << grid;
 }
 
 }  // namespace lvf::apps

@@ -57,6 +57,4 @@ cv::Mat3b drawPathsOnGrid(
 	const mrpt::maps::COccupancyGridMap2D& grid, const std::vector<DrawnPath>& paths,
 	const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& goal);
 
-void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath);
-
 }  // namespace lvf::apps

@@ -2,6 +2,7 @@
 
 #include "GlobalGrids.h"
 
+#include <lvfusion/common/GridOutputs.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
 #include <opencv2/imgcodecs.hpp>
@@ -16,7 +17,6 @@ void writeMapPlans(
 {
 	std::vector<DrawnPath> drawn;
 	for (const auto& p : plans) drawn.push_back({p.plan.path, p.colour});
-	std::vector<cv::Mat3b> panels;
 	std::ofstream csv(files.stage(name + "_plans.csv"));
 	csv << "map,outcome,length_m,min_clearance_m,sweeps,start_x,start_y,goal_x,goal_y\n";
 	for (const auto& p : plans)
@@ -25,11 +25,10 @@ void writeMapPlans(
 		std::ofstream pathFile(files.stage(base + "_path.txt"));
 		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
 		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
-		saveGrid(*p.grid, files.stage(base + "_map.gridmap.gz"));
+		lvf::common::saveGrid(*p.grid, files.stage(base + "_map.gridmap.gz"));
 		mrpt::img::CImage plain;
 		p.grid->getAsImage(plain);	// north up
 		plain.saveToFile(files.stage(base + "_map.png"));
-		panels.push_back(drawPathsOnGrid(*p.grid, drawn, ends.start, ends.goal));
 
 		const lvf::planning::TraversableGrid grown(*p.grid, planner.robotRadius, planner.obstacleBelow);
 		csv << mrpt::format(
@@ -38,14 +37,16 @@ void writeMapPlans(
 			p.plan.found() ? lvf::planning::minimumClearance(p.plan.path, grown) : 0.0, p.plan.sweeps,
 			ends.start.x, ends.start.y, ends.goal.x, ends.goal.y);
 	}
-	// Fig. 14c-d: laser-only map | fused map, both paths on each.
-	int rows = 0;
-	for (const auto& p : panels) rows = std::max(rows, p.rows);
-	for (auto& p : panels)
-		cv::copyMakeBorder(p, p, 0, rows - p.rows, 0, 10, cv::BORDER_CONSTANT, cv::Scalar::all(255));
-	cv::Mat sideBySide;
-	cv::hconcat(panels, sideBySide);
-	cv::imwrite(files.stage(name + "_paths.png"), sideBySide);
+	// Fig. 14c-d: laser-only map | fused map, over the same area, both paths
+	// on each.
+	std::vector<const mrpt::maps::COccupancyGridMap2D*> grids;
+	std::vector<std::string> labels;
+	for (const auto& p : plans)
+		grids.push_back(p.grid), labels.push_back(p.name == "laser" ? "laser only" : "laser + vision");
+	std::vector<cv::Mat> pictures;
+	for (const auto& grid : lvf::common::onCommonExtent(grids))
+		pictures.push_back(drawPathsOnGrid(grid, drawn, ends.start, ends.goal));
+	cv::imwrite(files.stage(name + "_paths.png"), lvf::common::sideBySide(pictures, labels));
 }
 
 }  // namespace lvf::apps

@@ -16,6 +16,7 @@
 #include "RunReport.h"
 
 #include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/GridOutputs.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
@@ -186,7 +187,7 @@ int run(int argc, char** argv)
 		auto grid = prior->mapByClass<mrpt::maps::COccupancyGridMap2D>();
 		if (grid)
 		{
-			lvf::apps::saveGrid(*grid, files.stage(name + "_prior_map.gridmap.gz"));
+			lvf::common::saveGrid(*grid, files.stage(name + "_prior_map.gridmap.gz"));
 			grid->saveAsBitmapFile(files.stage(name + "_prior_map.png"));
 		}
 	}
