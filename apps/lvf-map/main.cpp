@@ -60,11 +60,114 @@ TPoint2D parsePoint(const std::string& text, const std::string& option)
 	throw InputError(option, "", "expected x,y in metres, got '" + text + "'");
 }
 
-/** Which input named the start and the goal (for error messages). */
-struct EndpointSources
+/** The start and goal the user asked for (none: the run's first and last
+ * localised poses), and which input named each, for error messages. */
+struct RequestedEndpoints
 {
-	std::string start, goal;
+	std::optional<TPoint2D> start, goal;
+	std::string startSource, goalSource;
 };
+
+/** From --world (its first path pose, its target), then --start / --goal
+ * over it. */
+RequestedEndpoints requestedEndpoints(const std::string& worldFile, const std::string& start, const std::string& goal)
+{
+	RequestedEndpoints r;
+	if (!worldFile.empty())
+	{
+		const auto world = lvf::simulation::loadWorldFile(worldFile);
+		r.start = TPoint2D(world.path.front().x, world.path.front().y);
+		r.startSource = r.goalSource = worldFile;
+		if (!world.target) throw InputError(worldFile, "target", "the world has no target to plan to");
+		r.goal = *world.target;
+	}
+	if (!start.empty()) r.start = parsePoint(start, "--start"), r.startSource = "--start";
+	if (!goal.empty()) r.goal = parsePoint(goal, "--goal"), r.goalSource = "--goal";
+	return r;
+}
+
+/** The map the particles localise in, and where they start. */
+struct Prior
+{
+	std::shared_ptr<mrpt::maps::CMultiMetricMap> map;
+	std::string text;  //!< what it is, for the summary
+	mrpt::math::TPose2D initMin, initMax;
+	bool onFreeSpace = true;
+	std::optional<mrpt::maps::CSimpleMap> ownMap;  //!< built from the run's scans (no map given)
+};
+
+/** The map at `mapPath`, or with none one built from the run's scans by
+ * MRPT's ICP-SLAM, in the odometry frame: the particles then start round
+ * the first odometry pose. */
+Prior priorFor(const lvf::apps::LocalizationConfig& config, const std::string& mapPath, const lvf::apps::MapRun& run)
+{
+	Prior p;
+	p.map = std::make_shared<mrpt::maps::CMultiMetricMap>();
+	p.map->setListOfMaps(config.maps);
+	p.initMin = config.initMin, p.initMax = config.initMax;
+	p.onFreeSpace = config.initOnFreeSpace;
+	if (!mapPath.empty())
+	{
+		p.text = lvf::apps::loadPriorMap(mapPath, config.globalMaps.imageResolution, *p.map);
+		return p;
+	}
+	p.ownMap = lvf::apps::buildMapFromScans(run);
+	p.map->loadFromProbabilisticPosesAndObservations(*p.ownMap);
+	p.text = mrpt::format(
+		"none given: built from the run's %zu laser scans by MRPT's ICP-SLAM (%zu keyframes)", run.steps.size(),
+		p.ownMap->size());
+	const auto& o = run.steps.front().odometry;
+	const double xy = config.globalMaps.ownMapInitXY, yaw = mrpt::DEG2RAD(config.globalMaps.ownMapInitYawDeg);
+	p.initMin = {o.x() - xy, o.y() - xy, o.phi() - yaw};
+	p.initMax = {o.x() + xy, o.y() + xy, o.phi() + yaw};
+	p.onFreeSpace = false;
+	return p;
+}
+
+/** Localises every step of the run in turn, adding its scans to `grids`
+ * at the estimate; the estimates. */
+std::vector<lvf::metrics::StampedPose> localise(
+	const lvf::apps::MapRun& run, lvf::apps::ParticleLocalizer& localizer, lvf::apps::GlobalGrids& grids, bool quiet)
+{
+	std::vector<lvf::metrics::StampedPose> poses;
+	lvf::common::ProgressBar progress("localising", run.steps.size());
+	for (size_t k = 0; k < run.steps.size(); k++)
+	{
+		const auto& step = run.steps[k];
+		const auto pose = localizer.update(step);
+		poses.push_back({k, mrpt::Clock::toDouble(step.laser->timestamp), pose});
+		grids.add(*step.laser, step.fused.get(), pose);
+		if (!quiet) progress.update(k + 1);
+	}
+	grids.finish();
+	return poses;
+}
+
+/** Plans on each map. A start or goal the user gave must be usable (an
+ * InputError naming where it came from otherwise); the run's own first and
+ * last poses may not be (then the summary says why there is no path). */
+void planOnEachGrid(
+	std::vector<lvf::apps::MapPlan>& plans, const lvf::apps::Endpoints& ends, const RequestedEndpoints& requested,
+	const lvf::planning::ValueIterationPlanner::TOptions& options)
+{
+	using lvf::planning::PlanOutcome;
+	const lvf::planning::ValueIterationPlanner planner(options);
+	for (auto& p : plans)
+	{
+		p.plan = planner.plan(*p.grid, ends.start, ends.goal);
+		const auto o = p.plan.outcome;
+		auto where = [&](const TPoint2D& q, bool outside) {
+			return mrpt::format(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6 ? "(%.2f, %.2f) " : "(%g, %g) ", q.x, q.y) +
+				(outside ? "is outside the " + p.name + " map"
+						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
+							   p.name.c_str(), options.robotRadius));
+		};
+		if (requested.start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
+			throw InputError(requested.startSource, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
+		if (requested.goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
+			throw InputError(requested.goalSource, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
+	}
+}
 
 int run(int argc, char** argv)
 {
@@ -97,94 +200,32 @@ int run(int argc, char** argv)
 	const std::string name = fs::path(input).stem().string();
 
 	// Where the plan starts and ends, checked before any work.
-	std::optional<TPoint2D> start, goal;
-	lvf::apps::Endpoints ends;
-	EndpointSources sources;
-	if (!argWorld.getValue().empty())
-	{
-		const auto world = lvf::simulation::loadWorldFile(argWorld.getValue());
-		start = TPoint2D(world.path.front().x, world.path.front().y);
-		sources.start = sources.goal = argWorld.getValue();
-		if (!world.target) throw InputError(argWorld.getValue(), "target", "the world has no target to plan to");
-		goal = *world.target;
-	}
-	if (!argStart.getValue().empty()) start = parsePoint(argStart.getValue(), "--start"), sources.start = "--start";
-	if (!argGoal.getValue().empty()) goal = parsePoint(argGoal.getValue(), "--goal"), sources.goal = "--goal";
-
+	const auto requested = requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 
 	// The prior map, and where the particles start.
-	auto prior = std::make_shared<mrpt::maps::CMultiMetricMap>();
-	prior->setListOfMaps(config.maps);
-	const std::string mapPath = argMap.getValue().empty() ? config.mapFile : argMap.getValue();
-	std::string priorText;
-	mrpt::math::TPose2D initMin = config.initMin, initMax = config.initMax;
-	bool onFreeSpace = config.initOnFreeSpace;
-	std::optional<mrpt::maps::CSimpleMap> ownMap;
-	if (!mapPath.empty())
-		priorText = lvf::apps::loadPriorMap(mapPath, config.globalMaps.imageResolution, *prior);
-	else
-	{
-		ownMap = lvf::apps::buildMapFromScans(runLog);
-		prior->loadFromProbabilisticPosesAndObservations(*ownMap);
-		priorText = mrpt::format(
-			"none given: built from the run's %zu laser scans by MRPT's ICP-SLAM (%zu keyframes)",
-			runLog.steps.size(), ownMap->size());
-		// That map is in the odometry frame: start at the first odometry pose.
-		const auto& o = runLog.steps.front().odometry;
-		const double xy = config.globalMaps.ownMapInitXY, yaw = mrpt::DEG2RAD(config.globalMaps.ownMapInitYawDeg);
-		initMin = {o.x() - xy, o.y() - xy, o.phi() - yaw};
-		initMax = {o.x() + xy, o.y() + xy, o.phi() + yaw};
-		onFreeSpace = false;
-	}
+	const auto prior = priorFor(config, argMap.getValue().empty() ? config.mapFile : argMap.getValue(), runLog);
 
 	// 1-2. Localise every scan; accumulate both grids at the estimates.
 	mrpt::random::getRandomGenerator().randomize(argSeed.getValue());
-	lvf::apps::ParticleLocalizer localizer(config, prior, initMin, initMax, onFreeSpace);
+	lvf::apps::ParticleLocalizer localizer(config, prior.map, prior.initMin, prior.initMax, prior.onFreeSpace);
 	lvf::apps::GlobalGrids grids(config.globalMaps.resolution, config.globalMaps.visualMinHits);
-	std::vector<lvf::metrics::StampedPose> poses;
-	lvf::common::ProgressBar progress("localising", runLog.steps.size());
-	for (size_t k = 0; k < runLog.steps.size(); k++)
-	{
-		const auto& step = runLog.steps[k];
-		const auto pose = localizer.update(step);
-		poses.push_back({k, mrpt::Clock::toDouble(step.laser->timestamp), pose});
-		grids.add(*step.laser, step.fused.get(), pose);
-		if (!quiet) progress.update(k + 1);
-	}
-	grids.finish();
+	const auto poses = localise(runLog, localizer, grids, quiet);
 
 	// 3. Plan on each grid.
-	ends.start = start.value_or(TPoint2D(poses.front().pose.x(), poses.front().pose.y()));
-	ends.goal = goal.value_or(TPoint2D(poses.back().pose.x(), poses.back().pose.y()));
-	const lvf::planning::ValueIterationPlanner planner(config.planner);
+	lvf::apps::Endpoints ends;
+	ends.start = requested.start.value_or(TPoint2D(poses.front().pose.x(), poses.front().pose.y()));
+	ends.goal = requested.goal.value_or(TPoint2D(poses.back().pose.x(), poses.back().pose.y()));
 	std::vector<lvf::apps::MapPlan> plans{{"laser", &grids.laser(), {}, {0, 0, 255}}};
 	if (grids.fusedScans()) plans.push_back({"fused", &grids.fused(), {}, {0, 160, 0}});
-	for (auto& p : plans)
-	{
-		p.plan = planner.plan(*p.grid, ends.start, ends.goal);
-		using lvf::planning::PlanOutcome;
-		const auto o = p.plan.outcome;
-		// A start or goal the user gave must be usable; the run's own first
-		// and last poses may not be (then the summary says why there is no path).
-		auto where = [&](const TPoint2D& q, bool outside) {
-			return mrpt::format(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6 ? "(%.2f, %.2f) " : "(%g, %g) ", q.x, q.y) +
-				(outside ? "is outside the " + p.name + " map"
-						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
-										p.name.c_str(), config.planner.robotRadius));
-		};
-		if (start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
-			throw InputError(sources.start, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
-		if (goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
-			throw InputError(sources.goal, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
-	}
+	planOnEachGrid(plans, ends, requested, config.planner);
 
 	// Outputs, staged until everything worked.
 	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
-	if (ownMap)
+	if (prior.ownMap)
 	{
-		auto grid = prior->mapByClass<mrpt::maps::COccupancyGridMap2D>();
+		auto grid = prior.map->mapByClass<mrpt::maps::COccupancyGridMap2D>();
 		if (grid)
 		{
 			lvf::common::saveGrid(*grid, files.stage(name + "_prior_map.gridmap.gz"));
@@ -199,13 +240,13 @@ int run(int argc, char** argv)
 		"%s: %s: %zu scans (%zu with a fused scan) localised in %.2f s, %zu particles at the end\n"
 		"  prior map: %s\n",
 		kApp.c_str(), input.c_str(), runLog.steps.size(), runLog.fusedScans, timer.Tac(),
-		localizer.particles(), priorText.c_str());
+		localizer.particles(), prior.text.c_str());
 	if (!runLog.fusedScans)
 		std::cout << "  no FUSED scans in the input (run lvf-fuse first for the fused map): laser-only map only\n";
 	lvf::apps::printRunReport(std::cout, input, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
-			  << (ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
+			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
 	return lvf::common::kExitOk;
 }
 
