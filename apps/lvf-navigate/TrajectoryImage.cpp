@@ -9,6 +9,54 @@
 
 namespace lvf::apps
 {
+namespace
+{
+/** A strip under the picture saying what each colour is, on as many lines
+ * as its width needs. */
+cv::Mat withLegend(const cv::Mat& canvas)
+{
+	enum class Mark { Square, Stroke, Ring };
+	struct Item
+	{
+		Mark mark;
+		cv::Scalar colour;
+		std::string text;
+	};
+	const std::vector<Item> items{
+		{Mark::Square, cv::Scalar::all(0), "obstacle in the band (truth)"},
+		{Mark::Square, cv::Scalar(0, 0, 120), "robot's obstacle cell on it"},
+		{Mark::Square, cv::Scalar(80, 170, 255), "... where there is none"},
+		{Mark::Stroke, cv::Scalar(0, 0, 255), "path"},
+		{Mark::Stroke, cv::Scalar(200, 0, 200), "last plan"},
+		{Mark::Ring, cv::Scalar(0, 160, 0), "start"},
+		{Mark::Ring, cv::Scalar(255, 0, 0), "target"}};
+	constexpr int kLine = 22, kMark = 24, kSpace = 16;
+	constexpr double kFont = 0.45;
+	auto width = [&](const Item& i) {
+		return kMark + cv::getTextSize(i.text, cv::FONT_HERSHEY_SIMPLEX, kFont, 1, nullptr).width + kSpace;
+	};
+	int lines = 1, lineX = 8;
+	for (const auto& i : items)
+	{
+		if (lineX + width(i) > canvas.cols && lineX > 8) lines++, lineX = 8;
+		lineX += width(i);
+	}
+	cv::Mat out(canvas.rows + lines * kLine + 8, canvas.cols, canvas.type(), cv::Scalar::all(255));
+	canvas.copyTo(out(cv::Rect(0, 0, canvas.cols, canvas.rows)));
+	int x = 8, y = canvas.rows + kLine / 2 + 4;
+	for (const auto& i : items)
+	{
+		if (x + width(i) > canvas.cols && x > 8) y += kLine, x = 8;
+		if (i.mark == Mark::Square) cv::rectangle(out, cv::Rect(x, y - 6, 12, 12), i.colour, cv::FILLED);
+		if (i.mark == Mark::Stroke) cv::line(out, {x, y}, {x + 20, y}, i.colour, 2, cv::LINE_AA);
+		if (i.mark == Mark::Ring) cv::circle(out, {x + 6, y}, 6, i.colour, 2, cv::LINE_AA);
+		cv::putText(out, i.text, {x + kMark, y + 5}, cv::FONT_HERSHEY_SIMPLEX, kFont, cv::Scalar::all(0), 1, cv::LINE_AA);
+		x += width(i);
+	}
+	return out;
+}
+}  // namespace
+
 void writeTrajectoryImage(
 	const lvf::navigation::NavigationScenario& scenario, const lvf::navigation::NavigationRun& run,
 	double targetTolerance, const std::string& path)
@@ -57,7 +105,16 @@ void writeTrajectoryImage(
 		cv::line(canvas, c - cv::Point(k, k), c + cv::Point(k, k), cv::Scalar(0, 0, 255), 3);
 		cv::line(canvas, c - cv::Point(k, -k), c + cv::Point(k, -k), cv::Scalar(0, 0, 255), 3);
 	}
-	cv::imwrite(path, canvas);
+	// Only what is drawn (the truth grid spans every box of the world, the
+	// floor's too), with a margin.
+	cv::Mat grey;
+	cv::cvtColor(canvas, grey, cv::COLOR_BGR2GRAY);
+	const int margin = 20;
+	cv::Rect shown = cv::boundingRect(grey < 250);
+	shown = cv::Rect(shown.x - margin, shown.y - margin, shown.width + 2 * margin, shown.height + 2 * margin) &
+		cv::Rect(0, 0, canvas.cols, canvas.rows);
+	if (shown.area() == 0) shown = cv::Rect(0, 0, canvas.cols, canvas.rows);
+	cv::imwrite(path, withLegend(canvas(shown)));
 }
 
 }  // namespace lvf::apps
