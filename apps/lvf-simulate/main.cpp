@@ -22,6 +22,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 using lvf::common::InputError;
 using lvf::simulation::CStereoLaserSimulator;
@@ -47,10 +48,57 @@ std::string fileSizeText(const std::string& path)
 	return mrpt::format("%.1f MB", mb);
 }
 
+/** What the run simulated, for the summary. */
 struct Summary
 {
 	size_t frames = 0, inView = 0, hidden = 0;
+	size_t seenHidden = 0;	//!< of the hidden, those whose obstacle both cameras see
 };
+
+/** --random-world SEED (none: not given) or --world FILE (`worldGiven`:
+ * given by the user, not the default), not both; its path cut to the first
+ * `frames` poses if that is fewer (0: all). */
+lvf::simulation::World chooseWorld(std::optional<int> randomSeed, const std::string& worldFile, bool worldGiven, int frames)
+{
+	if (randomSeed && *randomSeed < 0) throw InputError("--random-world", "", "must be >= 0");
+	if (randomSeed && worldGiven) throw InputError("--random-world", "", "give either --world or --random-world");
+	auto world = randomSeed ? lvf::simulation::generateRandomWorld(static_cast<uint32_t>(*randomSeed))
+							: lvf::simulation::loadWorldFile(worldFile);
+	if (frames > 0 && static_cast<size_t>(frames) < world.path.size()) world.path.resize(static_cast<size_t>(frames));
+	return world;
+}
+
+/** Counts a frame's bearings in view, hidden, and hidden but seen by both
+ * cameras (its seen truth scan within recall's 0.10 m of the truth). */
+void count(const CStereoLaserSimulator::Frame& frame, const std::vector<bool>& inView, const std::vector<bool>& hidden, Summary& s)
+{
+	s.frames++;
+	for (size_t i = 0; i < inView.size(); i++)
+	{
+		s.inView += inView[i];
+		s.hidden += hidden[i];
+		s.seenHidden += hidden[i] && i < frame.seenTruthScan.size() && frame.seenTruthScan[i] <= frame.truthScan[i] + 0.10f;
+	}
+}
+
+void printSummary(
+	const lvf::simulation::World& world, const CStereoLaserSimulator::TOptions& options, const Summary& summary,
+	double seconds, const std::string& rawlogPath, const std::string& format, const std::string& name,
+	const std::string& outputDir)
+{
+	const auto& st = options.stereo;
+	std::cout << mrpt::format(
+		"%s: world '%s'%s: %zu boxes, %zu frame%s in %.2f s\n"
+		"  laser %zu rays over %.0f deg; stereo %dx%d, baseline %.3f m\n"
+		"  hidden bearings (in camera view, truth nearer than laser by > 0.15 m): %zu of %zu in view "
+		"(%.1f per frame; %zu of them seen by both cameras)\n"
+		"  wrote %s (%s, %s) and ground truth %s_* in %s\n",
+		kApp.c_str(), world.name.c_str(), world.sourceFile.empty() ? " (seeded)" : (" (" + world.sourceFile + ")").c_str(),
+		world.boxes.size(), summary.frames, summary.frames == 1 ? "" : "s", seconds, options.laser.rayCount(),
+		options.laser.apertureDeg, st.ncols, st.nrows, st.baseline, summary.hidden, summary.inView,
+		static_cast<double>(summary.hidden) / std::max<size_t>(1, summary.frames), summary.seenHidden,
+		rawlogPath.c_str(), format.c_str(), fileSizeText(rawlogPath).c_str(), name.c_str(), outputDir.c_str());
+}
 
 int run(int argc, char** argv)
 {
@@ -119,16 +167,8 @@ int run(int argc, char** argv)
 	const auto format = lvf::common::parseRawlogFormat(argFormat.getValue(), "--format");
 
 	lvf::registerAllClasses();
-	if (argRandomWorld.isSet() && argRandomWorld.getValue() < 0)
-		throw InputError("--random-world", "", "must be >= 0");
-	if (argRandomWorld.isSet() && argWorld.isSet())
-		throw InputError("--random-world", "", "give either --world or --random-world");
-	auto world = argRandomWorld.isSet()
-		? lvf::simulation::generateRandomWorld(static_cast<uint32_t>(argRandomWorld.getValue()))
-		: lvf::simulation::loadWorldFile(argWorld.getValue());
-	if (argFrames.getValue() > 0 &&
-		static_cast<size_t>(argFrames.getValue()) < world.path.size())
-		world.path.resize(static_cast<size_t>(argFrames.getValue()));
+	const auto world = chooseWorld(argRandomWorld.isSet() ? std::optional<int>(argRandomWorld.getValue()) : std::nullopt,
+		argWorld.getValue(), argWorld.isSet(), argFrames.getValue());
 	const std::string name = argName.getValue().empty() ? world.name : argName.getValue();
 	const bool quiet = argQuiet.getValue();
 
@@ -154,9 +194,7 @@ int run(int argc, char** argv)
 		if (k == 0)
 			lvf::apps::writePreviewImage(
 				files.stage(name + "_preview.png"), frame, hidden, sim.world().robot);
-		summary.frames++;
-		summary.inView += static_cast<size_t>(std::count(inView.begin(), inView.end(), true));
-		summary.hidden += static_cast<size_t>(std::count(hidden.begin(), hidden.end(), true));
+		count(frame, inView, hidden, summary);
 		if (!quiet) progress.update(k + 1);
 	}
 	rawlog.close();
@@ -165,24 +203,8 @@ int run(int argc, char** argv)
 	files.commit();
 
 	if (!quiet)
-	{
-		const auto& st = options.stereo;
-		std::cout << mrpt::format(
-			"%s: world '%s'%s: %zu boxes, %zu frame%s in %.2f s\n"
-			"  laser %zu rays over %.0f deg; stereo %dx%d, baseline %.3f m\n"
-			"  hidden bearings (in camera view, truth nearer than laser by > "
-			"0.15 m): %zu of %zu in view (%.1f per frame)\n"
-			"  wrote %s (%s, %s) and ground truth %s_* in %s\n",
-			kApp.c_str(), world.name.c_str(),
-			world.sourceFile.empty() ? " (seeded)" : (" (" + world.sourceFile + ")").c_str(),
-			world.boxes.size(), summary.frames, summary.frames == 1 ? "" : "s", timer.Tac(),
-			options.laser.rayCount(), options.laser.apertureDeg, st.ncols,
-			st.nrows, st.baseline, summary.hidden, summary.inView,
-			static_cast<double>(summary.hidden) / std::max<size_t>(1, summary.frames),
-			files.finalPath(name + ".rawlog").c_str(), argFormat.getValue().c_str(),
-			fileSizeText(files.finalPath(name + ".rawlog")).c_str(), name.c_str(),
-			files.outputDir().c_str());
-	}
+		printSummary(world, options, summary, timer.Tac(), files.finalPath(name + ".rawlog"), argFormat.getValue(),
+			name, files.outputDir());
 	return lvf::common::kExitOk;
 }
 
