@@ -24,11 +24,6 @@ bool inside(double u, double v, const mrpt::img::TCamera& camera, int margin)
 {
 	return u >= margin && v >= margin && u <= camera.ncols - 1.0 - margin && v <= camera.nrows - 1.0 - margin;
 }
-
-cv::Mat cameraMatrix(const mrpt::img::TCamera& c)
-{
-	return (cv::Mat_<double>(3, 3) << c.fx(), 0, c.cx(), 0, c.fy(), c.cy(), 0, 0, 1);
-}
 }  // namespace
 
 std::vector<float> StereoSeenTruth::scan(
@@ -55,10 +50,11 @@ std::vector<float> StereoSeenTruth::scan(
 	std::vector<float> ranges(scanGeometry.getScanSize(), std::numeric_limits<float>::infinity());
 	if (inRight.empty() || ranges.size() < 2) return ranges;
 	std::vector<cv::Point2d> pixels;
-	// The simulator's lenses are plumb_bob (or none: all zeros), whose eight
-	// coefficients are in OpenCV's order.
-	std::vector<double> distortion(right.dist.begin(), right.dist.end());
-	cv::projectPoints(inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), cameraMatrix(right), distortion, pixels);
+	// The right camera's model as the renderer uses it (CameraRayTable.h).
+	std::vector<double> K, distortion;
+	toOpenCV(right, K, distortion);
+	cv::projectPoints(
+		inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), cv::Mat(K).reshape(1, 3), distortion, pixels);
 	const double step = scanGeometry.aperture / static_cast<double>(ranges.size() - 1);
 	const double first = scanGeometry.getScanAngle(0);
 	for (size_t k = 0; k < inRight.size(); k++)
