@@ -87,7 +87,7 @@ class CStereoLaserSimulator : public mrpt::rtti::CObject
 	std::shared_ptr<const SimulatedLaser> m_laser;
 	std::shared_ptr<const SimulatedStereoRig> m_stereo;
 	std::shared_ptr<SimulatedOdometry> m_odometry;
-	std::shared_ptr<const StereoSeenTruth> m_seenTruth;
+	std::shared_ptr<const StereoSeenTruth> m_seenTruth;	 //!< made by the first frame with depth
 	size_t m_nextFrame = 0;
 };
 
