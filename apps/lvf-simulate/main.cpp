@@ -69,7 +69,7 @@ lvf::simulation::World chooseWorld(std::optional<int> randomSeed, const std::str
 }
 
 /** Counts a frame's bearings in view, hidden, and hidden but seen by both
- * cameras (its seen truth scan within recall's 0.10 m of the truth). */
+ * cameras. */
 void count(const CStereoLaserSimulator::Frame& frame, const std::vector<bool>& inView, const std::vector<bool>& hidden, Summary& s)
 {
 	s.frames++;
@@ -77,7 +77,8 @@ void count(const CStereoLaserSimulator::Frame& frame, const std::vector<bool>& i
 	{
 		s.inView += inView[i];
 		s.hidden += hidden[i];
-		s.seenHidden += hidden[i] && i < frame.seenTruthScan.size() && frame.seenTruthScan[i] <= frame.truthScan[i] + 0.10f;
+		s.seenHidden += hidden[i] && i < frame.seenTruthScan.size() &&
+			lvf::metrics::seenByBothCameras(frame.seenTruthScan[i], frame.truthScan[i]);
 	}
 }
 

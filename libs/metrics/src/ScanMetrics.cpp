@@ -106,9 +106,7 @@ FusionScore scoreFusedScan(
 		{
 			s.hidden++;
 			if (f <= t + 0.10) s.recalled++;
-			// Seen: both cameras see an obstacle point as near as the truth
-			// (within recall's 0.10 m: the seen scan bins points by bearing).
-			if (seenTruth && (*seenTruth)[i] <= t + 0.10)
+			if (seenTruth && seenByBothCameras((*seenTruth)[i], truth[i]))
 			{
 				s.seenHidden++;
 				if (f <= t + 0.10) s.seenRecalled++;

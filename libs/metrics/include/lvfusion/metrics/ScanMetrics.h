@@ -30,6 +30,11 @@ std::vector<bool> hiddenBearings(
 	const std::vector<float>& truth, const std::vector<bool>& inView,
 	double margin = 0.15);
 
+/** A bearing's obstacle is seen by both cameras when the seen truth scan
+ * (StereoSeenTruth.h) has a point as near as the truth, within recall's
+ * 0.10 m (the seen scan bins points by bearing). */
+inline bool seenByBothCameras(float seenTruth, float truth) { return seenTruth <= truth + 0.10; }
+
 }  // namespace lvf::metrics
 
 namespace lvf::metrics
