@@ -540,11 +540,14 @@ TEST_F(MiddleburyImport, RangesNearTheBearingFindTheMotorcyclesFrontAtEveryLaser
 	// off), as when the rule was chosen: nearest first leaves fewer points
 	// a bearing, and the three nearest the bearing then hold the front more
 	// often (central_share 0 with it: 0.875 / 0.789 / 0.826; the shipped
-	// fusion's recall is the same either way, checked below).
+	// fusion's recall is the same either way, checked below). Both without
+	// neighbour_bins, which came later and lends bins with few points of
+	// their own their neighbours' (central_share 0 with it at 0.30 m: 0.783).
 	const std::string name = "Motorcycle";
-	std::ofstream(m_dir / "c0.ini") << "[ScanFusion]\ncentral_share = 0\n"
+	std::ofstream(m_dir / "c0.ini") << "[ScanFusion]\ncentral_share = 0\nneighbour_bins = 0\n"
 									<< "[FocusedEpipolarSearch]\nnearest_first_levels = 0\n";
-	std::ofstream(m_dir / "rows.ini") << "[FocusedEpipolarSearch]\nnearest_first_levels = 0\n";
+	std::ofstream(m_dir / "rows.ini") << "[ScanFusion]\nneighbour_bins = 0\n"
+									  << "[FocusedEpipolarSearch]\nnearest_first_levels = 0\n";
 	for (const std::string height : {"0.15", "0.25", "0.30"})
 	{
 		SCOPED_TRACE(height);
@@ -567,7 +570,10 @@ TEST_F(MiddleburyImport, RangesNearTheBearingFindTheMotorcyclesFrontAtEveryLaser
 		EXPECT_GE(after, before + 0.08) << rule.out;
 		EXPECT_LE(phantomsAfter, phantomsBefore) << rule.out;
 		EXPECT_GE(now, std::max(after, 0.8)) << shipped.out;
-		EXPECT_LE(phantomsNow, phantomsBefore) << shipped.out;
+		// neighbour_bins costs one bearing of 84 at 0.15 m (1.96 m out
+		// where the truth is 2.12 m: two points of its own, a few beside
+		// it); the simulated rooms' phantom target bounds it.
+		EXPECT_LE(phantomsNow, std::max(phantomsBefore, 0.02)) << shipped.out;
 	}
 }
 

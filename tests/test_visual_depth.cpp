@@ -338,3 +338,27 @@ TEST(ScanFusion, AnIsolatedNearestPointDoesNotSetTheRange)
 	const std::vector<depth::VisualPoint> spread{pointAt(1.90, 0.0), pointAt(1.97, 0.05), pointAt(2.04, -0.05)};
 	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, spread)[90], 1.97, 1e-3);
 }
+
+TEST(ScanFusion, ABinWithTooFewPointsCountsItsNeighbours)
+{
+	// A table top 4 m out: a point a bin (pointAt's offset is in degrees
+	// from bin 90's bearing, a bin a degree wide). Bin 90's own point at
+	// 4.00 m with those of bins 89 and 91 makes three within
+	// cluster_tolerance, on both sides of it, the nearest supported.
+	const auto scan = oneDegreeScan();
+	std::vector<depth::VisualPoint> points{pointAt(4.00, 0.2), pointAt(4.02, -0.9), pointAt(4.10, 1.1)};
+	fusion::ScanFusion::TOptions options;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, points)[90], 4.00, 1e-3);
+	options.neighbourBins = 0;
+	EXPECT_TRUE(std::isinf(fusion::ScanFusion(options).visualRanges(scan, points)[90]));
+	options.neighbourBins = 2;
+	// Neighbours on one side only: bin 90's point just past its bearing
+	// with a cluster that ends before it (box room, frame 7: a wrong match
+	// 1.1 m out over bins 57-59 took bin 60 this way).
+	const std::vector<depth::VisualPoint> oneSided{pointAt(4.00, 0.3), pointAt(4.02, -1.3), pointAt(4.03, -1.4)};
+	EXPECT_TRUE(std::isinf(fusion::ScanFusion(options).visualRanges(scan, oneSided)[90]));
+	// Nor do neighbours make a range nearer than the bin's own points: its
+	// own point far behind theirs finds no cluster behind it.
+	const std::vector<depth::VisualPoint> behind{pointAt(4.50, 0.2), pointAt(4.02, -0.9), pointAt(4.03, 1.1)};
+	EXPECT_TRUE(std::isinf(fusion::ScanFusion(options).visualRanges(scan, behind)[90]));
+}

@@ -21,6 +21,7 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	centralShare = ini.real("central_share", centralShare, 0, 0.5);
 	rangeSupport = ini.real("range_support", rangeSupport, 0, 10);
 	bridgeWidth = ini.real("bridge_width", bridgeWidth, 0, 10);
+	neighbourBins = ini.integer("neighbour_bins", neighbourBins, 0, 10);
 	ini.rejectUnknownKeys();
 }
 
@@ -32,6 +33,7 @@ void ScanFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin (negative: reach past it on both sides by that much)");
 	writeOption(c, s, "central_share", centralShare, "the bearing's range is the nearest of its cluster's min_points points nearest the bin's bearing, and of any others nearer it than this fraction of a bin; 0: off [0..0.5]");
 	writeOption(c, s, "range_support", rangeSupport, "that nearest point needs another point of the cluster within this much range of it (else the next one; all isolated: their median); 0: off [m]");
+	writeOption(c, s, "neighbour_bins", neighbourBins, "a bin with fewer than min_points points of its own may count those of the bins up to this many either side, some on each side (its own nearest point with such a cluster behind it sets the range); 0: off");
 	writeOption(c, s, "bridge_width", bridgeWidth, "close gaps in an edge at most this wide between two bearings whose ranges agree within cluster_tolerance, one of them set by vision: bearings between that are farther than both, and not placed by vision within cluster_tolerance of them, take the line between them; 0: off [m]");
 }
 
@@ -59,6 +61,34 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 	const auto median = first + (chosenEnd - first) / 2;
 	std::nth_element(first, median, chosenEnd, [](const Hit& a, const Hit& b) { return a.range < b.range; });
 	return median->range;
+}
+
+float ScanFusion::rangeWithNeighbours(const std::vector<std::vector<Hit>>& perBearing, size_t i) const
+{
+	std::vector<const Hit*> own;
+	for (const Hit& h : perBearing[i]) own.push_back(&h);
+	std::sort(own.begin(), own.end(), [](const Hit* a, const Hit* b) { return a->range < b->range; });
+	const long first = std::max(0L, long(i) - m_options.neighbourBins);
+	const long last = std::min(long(perBearing.size()) - 1, long(i) + m_options.neighbourBins);
+	for (const Hit* start : own)
+	{
+		// The points of this bin and its neighbours within the tolerance
+		// behind this one. The surface must go on into a bin on each side:
+		// one-sided, its points beside the ray would decide (a wrong match
+		// that does not reach the next bins, or an obstacle's end).
+		size_t count = 0;
+		bool supported = m_options.rangeSupport <= 0, below = false, above = false;
+		for (long j = first; j <= last; j++)
+			for (const Hit& h : perBearing[size_t(j)])
+			{
+				if (h.range < start->range || h.range - start->range > m_options.clusterTolerance) continue;
+				count++;
+				below |= j < long(i), above |= j > long(i);
+				supported |= &h != start && h.range - start->range <= m_options.rangeSupport;
+			}
+		if (count >= size_t(m_options.minPoints) && supported && below && above) return start->range;
+	}
+	return std::numeric_limits<float>::infinity();
 }
 
 std::vector<float> ScanFusion::visualRanges(
@@ -117,6 +147,9 @@ std::vector<float> ScanFusion::visualRanges(
 			break;
 		}
 	}
+	if (m_options.neighbourBins > 0)
+		for (size_t i = 0; i < n; i++)
+			if (!perBearing[i].empty() && perBearing[i].size() < need) out[i] = rangeWithNeighbours(perBearing, i);
 	if (m_options.bridgeWidth > 0)
 	{
 		std::vector<float> laserRanges(n);
