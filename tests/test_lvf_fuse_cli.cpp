@@ -223,7 +223,7 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 {
 	// Frame k is spoiled in way k; frame 0 and the last one are good.
-	const auto log = writeLog("spoilt.rawlog", 10, [](size_t k, CStereoLaserSimulator::Frame& f) {
+	const auto log = writeLog("spoilt.rawlog", 11, [](size_t k, CStereoLaserSimulator::Frame& f) {
 		auto& s = *f.stereo;
 		auto& scan = *f.scan;
 		switch (k)
@@ -247,6 +247,7 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 			case 7:	 // a calibration so wrong that everything contradicts it
 				s.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));
 				break;
+			case 9: s.leftCamera.distortion = mrpt::img::DistortionModel::kannala_brandt; break;
 			default: break;
 		}
 	});
@@ -262,14 +263,16 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"frame 7: the images contradict the laser model (",  // "N% of the floor consistent, ..."
 		// Not the share of too few floor pixels to judge by (none reads as 100%).
 		"frame 8: the images contradict the laser model (too little floor in view to judge, ",
+		"frame 9: left camera: fish-eye (kannala_brandt) distortion is not supported: give images rectified by "
+		"cv::fisheye, or a plumb_bob calibration (laser only)",
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
 	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
-	EXPECT_NE(r.out.find("10 fused frames"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("11 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
-	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 10);
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 11);
 }
 
 TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)

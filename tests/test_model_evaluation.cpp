@@ -5,11 +5,13 @@
 #include "TestWorlds.h"
 
 #include <gtest/gtest.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <lvfusion/evaluation/ModelWarp.h>
 #include <mrpt/core/bits_math.h>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cstring>
@@ -99,7 +101,11 @@ TEST(RectifiedStereo, ParallelUndistortedRigIsUsedAsIs)
 	EXPECT_EQ(g.leftPose, mrpt::poses::CPose3D(f.stereo->cameraPose));
 }
 
-TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDisparity)
+namespace
+{
+/** A checkerboard wall 2.5 m ahead of a toed-in, rolled rig with lens
+ * distortion `dist` (SimulatedStereoRig's), rendered noise-free. */
+CStereoLaserSimulator::Frame distortedMisalignedRigFrame(const std::vector<double>& dist)
 {
 	World world = lvf::test::worldFromText(lvf::test::wallWorld(
 		2.5, "{kind: checker, scale: 0.25, albedo: 0.5, contrast: 0.4}"));
@@ -107,13 +113,19 @@ TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDispar
 	opt.stereo.poseX = opt.stereo.poseY = 0;
 	opt.stereo.poseZ = 1.5;
 	opt.stereo.tiltDeg = 0;
-	opt.stereo.dist = {-0.2, 0.05, 0.001, -0.001, 0};
+	opt.stereo.dist = dist;
 	opt.stereo.rightYawDeg = -1.5;	// toed in
 	opt.stereo.rightPitchDeg = 0.6;
 	opt.stereo.rightRollDeg = 0.8;
 	opt.stereo.supersampling = 3;
 	CStereoLaserSimulator sim(world, opt);
-	const auto f = sim.simulateNextFrame(false);
+	return sim.simulateNextFrame(false);
+}
+
+/** The wall's checker corners (every 0.25 m) found in the rectified pair
+ * where the rectified geometry puts them: on one row, at their disparity. */
+void expectCornersOnOneRowAtTheirDisparity(const CStereoLaserSimulator::Frame& f)
+{
 	RectifiedStereo stereo;
 	stereo.prepare(*f.stereo, "frame 0");
 	ASSERT_TRUE(stereo.remaps());
@@ -154,6 +166,60 @@ TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDispar
 	std::cout << corners << " corners; mean row difference " << sumRow / corners
 			  << " px; worst row difference " << worstRow
 			  << " px, worst disparity error " << worstDisparity << " px\n";
+}
+}  // namespace
+
+TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDisparity)
+{
+	expectCornersOnOneRowAtTheirDisparity(distortedMisalignedRigFrame({-0.2, 0.05, 0.001, -0.001, 0}));
+}
+
+TEST(RectifiedStereo, RationalDistortionModelIsUndoneWithAllEightCoefficients)
+{
+	// plumb_bob with k4-k6 (OpenCV's rational model): a 1 + 0.1 r^2 + 0.02
+	// r^4 denominator moves the image's corners by several pixels.
+	const std::vector<double> dist{-0.2, 0.05, 0.001, -0.001, 0, 0.1, 0.02, 0};
+	const auto f = distortedMisalignedRigFrame(dist);
+	// The renderer distorts with all eight: a corner of the wall, projected
+	// here by OpenCV from the test's own numbers, is where the raw left
+	// image shows it, and 5 coefficients alone would put it elsewhere.
+	const auto& cam = f.stereo->leftCamera;
+	const cv::Matx33d K(cam.fx(), 0, cam.cx(), 0, cam.fy(), cam.cy(), 0, 0, 1);
+	const auto p = mrpt::poses::CPose3D(f.stereo->cameraPose).inverseComposePoint({2.5, 1.25, 1.5 + 0.75});
+	std::vector<cv::Point2d> all8, first5;
+	const std::vector<cv::Point3d> corner{{p.x, p.y, p.z}};
+	cv::projectPoints(corner, cv::Vec3d::all(0), cv::Vec3d::all(0), K, dist, all8);
+	cv::projectPoints(corner, cv::Vec3d::all(0), cv::Vec3d::all(0), K,
+		std::vector<double>(dist.begin(), dist.begin() + 5), first5);
+	ASSERT_GT(cv::norm(all8[0] - first5[0]), 3.0);
+	std::vector<cv::Point2f> found{cv::Point2f(all8[0]) + cv::Point2f(1.2f, -1.2f)};
+	cv::cornerSubPix(toGrey(f.stereo->imageLeft), found, cv::Size(5, 5), cv::Size(-1, -1),
+		cv::TermCriteria(cv::TermCriteria::EPS | cv::TermCriteria::COUNT, 100, 1e-4));
+	EXPECT_LT(cv::norm(cv::Point2d(found[0]) - all8[0]), 0.5) << all8[0] << " " << found[0];
+	// And rectification undoes all eight.
+	expectCornersOnOneRowAtTheirDisparity(f);
+}
+
+TEST(RectifiedStereo, FishEyeCalibrationIsRefusedByName)
+{
+	// kannala_brandt has no pin-hole form in OpenCV's stereoRectify; read as
+	// plumb_bob it would rectify to nonsense.
+	CStereoLaserSimulator sim(lvf::test::worldFromText(lvf::test::roomWorld("")), CStereoLaserSimulator::TOptions());
+	const auto f = sim.simulateNextFrame(false);
+	f.stereo->rightCamera.distortion = mrpt::img::DistortionModel::kannala_brandt;
+	f.stereo->rightCamera.dist = {0.01, -0.002, 0, 0, 0.0005, 0.0001, 0, 0};
+	RectifiedStereo stereo;
+	try
+	{
+		stereo.prepare(*f.stereo, "log.rawlog: frame 4");
+		FAIL() << "a fish-eye calibration was accepted";
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		EXPECT_EQ(std::string(e.what()),
+			"log.rawlog: frame 4: right camera: fish-eye (kannala_brandt) distortion is not supported: give images "
+			"rectified by cv::fisheye, or a plumb_bob calibration");
+	}
 }
 
 TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)

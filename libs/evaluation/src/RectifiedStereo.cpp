@@ -1,4 +1,5 @@
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/evaluation/RectifiedStereo.h>
 #include <Eigen/Dense>
 #include <opencv2/calib3d.hpp>
@@ -17,13 +18,6 @@ bool nearlyEqual(double a, double b)
 	return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
 }
 
-bool hasDistortion(const mrpt::img::TCamera& c)
-{
-	for (double k : c.dist)
-		if (k != 0) return true;
-	return false;
-}
-
 /** Everything that defines the rectification, for change detection. */
 std::vector<double> calibrationKey(
 	const mrpt::img::TStereoCamera& s, const mrpt::poses::CPose3D& cameraPose)
@@ -40,16 +34,6 @@ std::vector<double> calibrationKey(
 	for (const auto* p : {&right, &cameraPose})
 		for (int i = 0; i < 6; i++) key.push_back((*p)[i]);
 	return key;
-}
-
-cv::Mat cameraMatrix(const mrpt::img::TCamera& c)
-{
-	return (cv::Mat_<double>(3, 3) << c.fx(), 0, c.cx(), 0, c.fy(), c.cy(), 0, 0, 1);
-}
-
-cv::Mat distortionVector(const mrpt::img::TCamera& c)
-{
-	return cv::Mat(1, 5, CV_64F, const_cast<double*>(c.dist.data())).clone();
 }
 
 /** An image kept in a file beside the rawlog (MRPT's external storage,
@@ -94,6 +78,10 @@ void RectifiedStereo::prepare(
 			throw InputError(record, std::string(which) + " camera",
 				"focal length must be positive and finite (fx " +
 					std::to_string(cam->fx()) + ", fy " + std::to_string(cam->fy()) + ")");
+		if (!lvf::common::isPinholeModel(*cam))
+			throw InputError(record, std::string(which) + " camera",
+				"fish-eye (kannala_brandt) distortion is not supported: give images rectified by "
+				"cv::fisheye, or a plumb_bob calibration");
 		if (image->getWidth() != cam->ncols || image->getHeight() != cam->nrows)
 			throw InputError(record, std::string(which) + " image",
 				std::to_string(image->getWidth()) + "x" + std::to_string(image->getHeight()) +
@@ -117,7 +105,7 @@ void RectifiedStereo::prepare(
 	const auto& L = calib.leftCamera;
 	const auto& R = calib.rightCamera;
 	m_geometry.size = cv::Size(static_cast<int>(L.ncols), static_cast<int>(L.nrows));
-	const bool alreadyRectified = !hasDistortion(L) && !hasDistortion(R) &&
+	const bool alreadyRectified = !lvf::common::hasLensDistortion(L) && !lvf::common::hasLensDistortion(R) &&
 		nearlyEqual(L.fx(), L.fy()) && nearlyEqual(L.fx(), R.fx()) &&
 		nearlyEqual(L.fy(), R.fy()) && nearlyEqual(L.cy(), R.cy()) &&
 		right.getRotationMatrix().asEigen().isIdentity(1e-9) &&
@@ -144,16 +132,17 @@ void RectifiedStereo::prepare(
 		for (int j = 0; j < 3; j++) Rlr.at<double>(i, j) = rot(i, j);
 		Tlr.at<double>(i) = leftInRight[i];
 	}
+	const cv::Matx33d KL = lvf::common::openCvCameraMatrix(L), KR = lvf::common::openCvCameraMatrix(R);
+	const std::vector<double> DL = lvf::common::openCvDistortion(L), DR = lvf::common::openCvDistortion(R);
 	cv::Mat R1, R2, P1, P2, Q;
 	// Zero disparity at infinity (equal cx) and alpha 0: only valid pixels.
 	cv::stereoRectify(
-		cameraMatrix(L), distortionVector(L), cameraMatrix(R), distortionVector(R),
-		m_geometry.size, Rlr, Tlr, R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, 0);
+		KL, DL, KR, DR, m_geometry.size, Rlr, Tlr, R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, 0);
 	cv::initUndistortRectifyMap(
-		cameraMatrix(L), distortionVector(L), R1, P1, m_geometry.size, CV_16SC2,
+		KL, DL, R1, P1, m_geometry.size, CV_16SC2,
 		m_mapLeftX, m_mapLeftY);
 	cv::initUndistortRectifyMap(
-		cameraMatrix(R), distortionVector(R), R2, P2, m_geometry.size, CV_16SC2,
+		KR, DR, R2, P2, m_geometry.size, CV_16SC2,
 		m_mapRightX, m_mapRightY);
 	m_geometry.f = P1.at<double>(0, 0);
 	m_geometry.cx = P1.at<double>(0, 2);

@@ -1,3 +1,4 @@
+#include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/simulation/CameraRayTable.h>
 #include <opencv2/calib3d.hpp>
 
@@ -5,14 +6,6 @@
 
 namespace lvf::simulation
 {
-void toOpenCV(
-	const mrpt::img::TCamera& camera, std::vector<double>& K,
-	std::vector<double>& distortion)
-{
-	K = {camera.fx(), 0, camera.cx(), 0, camera.fy(), camera.cy(), 0, 0, 1};
-	distortion = camera.getDistortionParamsAsVector();
-}
-
 CameraRayTable::CameraRayTable(
 	const mrpt::img::TCamera& camera, int supersampling)
 	: m_cols(static_cast<int>(camera.ncols) * supersampling),
@@ -28,8 +21,7 @@ CameraRayTable::CameraRayTable(
 		for (int i = 0; i < m_cols; i++)
 			samples.emplace_back((i + 0.5) / s - 0.5, (j + 0.5) / s - 0.5);
 
-	std::vector<double> K, D;
-	toOpenCV(camera, K, D);
+	const std::vector<double> D = lvf::common::openCvDistortion(camera);
 	std::vector<cv::Point2d> rays;
 	if (D.empty())
 	{
@@ -44,7 +36,7 @@ CameraRayTable::CameraRayTable(
 		// Tight criteria: the default 5 iterations leave ~0.1 px errors at the
 		// corners of a strongly distorted image.
 		cv::undistortPoints(
-			samples, rays, cv::Mat(3, 3, CV_64F, K.data()), D, cv::noArray(),
+			samples, rays, lvf::common::openCvCameraMatrix(camera), D, cv::noArray(),
 			cv::noArray(),
 			cv::TermCriteria(
 				cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12));

@@ -22,10 +22,10 @@ void SimulatedStereoRig::TOptions::loadFromConfigFile(
 	cx = ini.real("cx", cx);
 	cy = ini.real("cy", cy);
 	dist = ini.reals("dist", dist);
-	if (dist.size() != 5)
+	if (dist.size() != 5 && dist.size() != 8)
 		throw lvf::common::InputError(
 			ini.sourceName(), "[" + section + "] dist",
-			"needs 5 values [k1 k2 p1 p2 k3], got " +
+			"needs 5 values [k1 k2 p1 p2 k3] or 8 [k1 k2 p1 p2 k3 k4 k5 k6], got " +
 				std::to_string(dist.size()));
 	baseline = ini.real("baseline", baseline, 1e-3, 10);
 	rightYawDeg = ini.real("right_yaw_deg", rightYawDeg, -20, 20);
@@ -57,7 +57,7 @@ void SimulatedStereoRig::TOptions::saveToConfigFile(
 	writeOption(c, s, "fy", fy, "focal length along y [px]");
 	writeOption(c, s, "cx", cx, "principal point x [px] (pixel centres are integers)");
 	writeOption(c, s, "cy", cy, "principal point y [px]");
-	writeOption(c, s, "dist", dist, "plumb_bob distortion [k1 k2 p1 p2 k3]; zeros: none");
+	writeOption(c, s, "dist", dist, "plumb_bob distortion [k1 k2 p1 p2 k3], or with [k4 k5 k6] (OpenCV's rational model); zeros: none");
 	writeOption(c, s, "baseline", baseline, "right camera offset along the left camera's x [m]");
 	writeOption(c, s, "right_yaw_deg", rightYawDeg, "right camera rotation vs the left, yaw (0: parallel rig) [deg]");
 	writeOption(c, s, "right_pitch_deg", rightPitchDeg, "right camera rotation vs the left, pitch [deg]");
@@ -81,7 +81,10 @@ mrpt::img::TStereoCamera SimulatedStereoRig::TOptions::stereoCamera() const
 	cam.nrows = static_cast<uint32_t>(nrows);
 	cam.setIntrinsicParamsFromValues(fx, fy, cx, cy);
 	if (std::any_of(dist.begin(), dist.end(), [](double d) { return d != 0; }))
+	{
 		cam.setDistortionPlumbBob(dist[0], dist[1], dist[2], dist[3], dist[4]);
+		if (dist.size() == 8) cam.k4(dist[5]), cam.k5(dist[6]), cam.k6(dist[7]);
+	}
 	mrpt::img::TStereoCamera stereo;
 	stereo.leftCamera = cam;
 	stereo.rightCamera = cam;

@@ -1,3 +1,4 @@
+#include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/simulation/StereoSeenTruth.h>
 #include <opencv2/calib3d.hpp>
 
@@ -50,11 +51,9 @@ std::vector<float> StereoSeenTruth::scan(
 	std::vector<float> ranges(scanGeometry.getScanSize(), std::numeric_limits<float>::infinity());
 	if (inRight.empty() || ranges.size() < 2) return ranges;
 	std::vector<cv::Point2d> pixels;
-	// The right camera's model as the renderer uses it (CameraRayTable.h).
-	std::vector<double> K, distortion;
-	toOpenCV(right, K, distortion);
-	cv::projectPoints(
-		inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), cv::Mat(K).reshape(1, 3), distortion, pixels);
+	// The right camera's model as the renderer reads it (OpenCvCamera.h).
+	cv::projectPoints(inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), lvf::common::openCvCameraMatrix(right),
+		lvf::common::openCvDistortion(right), pixels);
 	const double step = scanGeometry.aperture / static_cast<double>(ranges.size() - 1);
 	const double first = scanGeometry.getScanAngle(0);
 	for (size_t k = 0; k < inRight.size(); k++)

@@ -41,9 +41,4 @@ class CameraRayTable
 	std::vector<Tile> m_tiles;
 };
 
-/** OpenCV camera matrix and distortion vector of an MRPT camera. */
-void toOpenCV(
-	const mrpt::img::TCamera& camera, std::vector<double>& cameraMatrix3x3,
-	std::vector<double>& distortion);
-
 }  // namespace lvf::simulation

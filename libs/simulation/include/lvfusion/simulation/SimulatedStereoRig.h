@@ -24,7 +24,8 @@ class SimulatedStereoRig
 		int ncols = 640, nrows = 480;  //!< image size [px]
 		double fx = 450, fy = 450;	//!< focal lengths [px]
 		double cx = 319.5, cy = 239.5;	//!< principal point [px]
-		/** plumb_bob distortion [k1 k2 p1 p2 k3]; all zero: none. */
+		/** plumb_bob distortion [k1 k2 p1 p2 k3], or 8 values with k4 k5 k6
+		 * (OpenCV's rational model); all zero: none. */
 		std::vector<double> dist{0, 0, 0, 0, 0};
 		double baseline = 0.12;	 //!< right camera is this far to the right [m]
 		/** Right camera's rotation relative to the left [deg]: zero for a
