@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
@@ -198,6 +199,24 @@ TEST(RectifiedStereo, RationalDistortionModelIsUndoneWithAllEightCoefficients)
 	EXPECT_LT(cv::norm(cv::Point2d(found[0]) - all8[0]), 0.5) << all8[0] << " " << found[0];
 	// And rectification undoes all eight.
 	expectCornersOnOneRowAtTheirDisparity(f);
+}
+
+TEST(OpenCvCamera, ReadsTheLensAsMrptsRectifierDoesWithTheRationalTerms)
+{
+	mrpt::img::TCamera cam;
+	cam.setIntrinsicParamsFromValues(450, 451, 319.5, 239.5);
+	EXPECT_EQ(lvf::common::openCvCameraMatrix(cam), cv::Matx33d(450, 0, 319.5, 0, 451, 239.5, 0, 0, 1));
+	EXPECT_TRUE(lvf::common::openCvDistortion(cam).empty());
+	EXPECT_FALSE(lvf::common::hasLensDistortion(cam));
+	// setDistortionParamsVector leaves the model `none`; the numbers count.
+	cam.setDistortionParamsVector(std::vector<double>{-0.2, 0.05, 0.001, -0.001, 0.01});
+	EXPECT_EQ(lvf::common::openCvDistortion(cam), (std::vector<double>{-0.2, 0.05, 0.001, -0.001, 0.01}));
+	cam.setDistortionPlumbBob(-0.2, 0.05, 0.001, -0.001);
+	cam.k5(0.02);
+	EXPECT_EQ(lvf::common::openCvDistortion(cam), (std::vector<double>{-0.2, 0.05, 0.001, -0.001, 0, 0, 0.02, 0}));
+	cam.distortion = mrpt::img::DistortionModel::kannala_brandt;
+	EXPECT_FALSE(lvf::common::isPinholeModel(cam));
+	EXPECT_THROW(lvf::common::openCvDistortion(cam), std::invalid_argument);
 }
 
 TEST(RectifiedStereo, FishEyeCalibrationIsRefusedByName)

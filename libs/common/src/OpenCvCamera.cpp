@@ -20,16 +20,14 @@ std::vector<double> openCvDistortion(const mrpt::img::TCamera& camera)
 {
 	if (!isPinholeModel(camera))
 		throw std::invalid_argument("openCvDistortion: not a pin-hole distortion model (kannala_brandt)");
-	if (camera.distortion == mrpt::img::DistortionModel::none) return {};
 	const auto& d = camera.dist;
-	const bool rational = d[5] != 0 || d[6] != 0 || d[7] != 0;
-	return std::vector<double>(d.begin(), d.begin() + (rational ? 8 : 5));
+	auto nonZero = [&](size_t first, size_t end) {
+		return std::any_of(d.begin() + long(first), d.begin() + long(end), [](double k) { return k != 0; });
+	};
+	if (!nonZero(0, d.size())) return {};
+	return std::vector<double>(d.begin(), d.begin() + (nonZero(5, 8) ? 8 : 5));
 }
 
-bool hasLensDistortion(const mrpt::img::TCamera& camera)
-{
-	const auto d = openCvDistortion(camera);
-	return std::any_of(d.begin(), d.end(), [](double k) { return k != 0; });
-}
+bool hasLensDistortion(const mrpt::img::TCamera& camera) { return !openCvDistortion(camera).empty(); }
 
 }  // namespace lvf::common

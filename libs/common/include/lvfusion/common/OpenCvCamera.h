@@ -19,14 +19,17 @@ cv::Matx33d openCvCameraMatrix(const mrpt::img::TCamera& camera);
  * which OpenCV models with its own cv::fisheye functions). */
 bool isPinholeModel(const mrpt::img::TCamera& camera);
 
-/** The distortion coefficients as MRPT's model defines them
- * (TCamera::distortion): `none`: none (MRPT ignores the stored numbers);
- * `plumb_bob`: k1 k2 p1 p2 k3, and k4 k5 k6 (OpenCV's rational model) when
- * any of those is non-zero. Throws std::invalid_argument for a model that
- * is not a pin-hole one (isPinholeModel). */
+/** OpenCV's distortion coefficients of a pin-hole camera: k1 k2 p1 p2 k3
+ * of TCamera::dist, and k4 k5 k6 (OpenCV's rational model) when any of
+ * those is non-zero; none when all are zero. Read whatever the model field
+ * says between `none` and `plumb_bob`, as MRPT's own CStereoRectifyMap and
+ * projectPoint_with_distortion do: a camera filled by
+ * setDistortionParamsVector keeps the model `none`. Throws
+ * std::invalid_argument for a model that is not a pin-hole one
+ * (isPinholeModel). */
 std::vector<double> openCvDistortion(const mrpt::img::TCamera& camera);
 
-/** Any non-zero coefficient in openCvDistortion(camera). */
+/** openCvDistortion(camera) is not empty. */
 bool hasLensDistortion(const mrpt::img::TCamera& camera);
 
 }  // namespace lvf::common

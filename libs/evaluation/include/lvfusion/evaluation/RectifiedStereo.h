@@ -8,8 +8,8 @@
 // A pair that is already like that (no distortion, equal intrinsics apart
 // from cx, parallel cameras, e.g. Middlebury or the default simulator) is used
 // as is; otherwise OpenCV's stereoRectify + remap produce it, with the lens
-// model read as MRPT defines it (OpenCvCamera.h: plumb_bob's 5 coefficients,
-// or 8 with k4-k6; a fish-eye calibration is refused by name). The rectified
+// read as MRPT's own CStereoRectifyMap reads it but with k4-k6 as well
+// (OpenCvCamera.h); a fish-eye calibration is refused by name. The rectified
 // left camera's pose on the robot is kept so that pixels can be turned into
 // robot-frame rays and back.
 
