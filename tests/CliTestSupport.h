@@ -78,6 +78,30 @@ inline std::map<std::string, int> labelCounts(const std::string& info)
 	return counts;
 }
 
+/** A CSV file with a header line: one column name -> field map per row. */
+inline std::vector<std::map<std::string, std::string>> readCsv(const fs::path& p)
+{
+	auto fields = [](const std::string& line) {
+		std::vector<std::string> out;
+		std::stringstream in(line);
+		for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+		if (!line.empty() && line.back() == ',') out.push_back("");
+		return out;
+	};
+	std::istringstream in(slurp(p));
+	std::string line;
+	std::getline(in, line);
+	const auto header = fields(line);
+	std::vector<std::map<std::string, std::string>> rows;
+	while (std::getline(in, line))
+	{
+		const auto values = fields(line);
+		auto& row = rows.emplace_back();
+		for (size_t k = 0; k < header.size(); k++) row[header[k]] = k < values.size() ? values[k] : "";
+	}
+	return rows;
+}
+
 /** Lines of `text` that are not blank nor comments (# ;). */
 inline std::vector<std::string> keyLines(const std::string& text)
 {

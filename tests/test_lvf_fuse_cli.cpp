@@ -88,19 +88,11 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	// --verbose: each frame's figures as it is fused, the CSV's own.
 	const auto verbose = fuse("--input " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog --outdir v --verbose");
 	ASSERT_EQ(verbose.status, 0) << verbose.err;
-	auto fields = [](const std::string& line) {
-		std::vector<std::string> out;
-		std::stringstream in(line);
-		for (std::string f; std::getline(in, f, ',');) out.push_back(f);
-		return out;
-	};
-	const auto header = fields(csv.substr(0, csv.find('\n')));
-	const auto row = fields(csv.substr(csv.find('\n') + 1));
-	const auto column = std::find(header.begin(), header.end(), "shortened_bearings") - header.begin();
+	const std::string shortened = readCsv(m_dir / "out/two_cubes_frames.csv").at(0).at("shortened_bearings");
 	const std::string line = "lvf-fuse: " + std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog: frame 0: ";
 	const auto at = verbose.out.find(line);
 	ASSERT_NE(at, std::string::npos) << verbose.out;
-	EXPECT_NE(verbose.out.find("; " + row.at(size_t(column)) + " of 181 bearings nearer than the laser", at),
+	EXPECT_NE(verbose.out.find("; " + shortened + " of 181 bearings nearer than the laser", at),
 		std::string::npos)
 		<< verbose.out;
 	EXPECT_EQ(r.out.find(": frame 0: "), std::string::npos) << r.out;
@@ -119,6 +111,51 @@ TEST_F(LvfFuseCli, EvaluationPicturesCanBeThinnedOut)
 		EXPECT_EQ(counts.at("FUSED"), 8) << every;
 		EXPECT_EQ(counts.count("EVAL") ? counts.at("EVAL") : 0, pictures) << every;
 	}
+}
+
+TEST_F(LvfFuseCli, ThePointsFileHoldsEveryVisualPointEachBearingWasSetFrom)
+{
+	// --points: every visual point of every frame. They are the frames
+	// CSV's counts, lie in the robot's height band, and each visual range of
+	// the bearings CSV that was measured (not a closed gap) is the range of
+	// a point within neighbour_bins (2) + half a bin of its bearing.
+	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+	const auto r = fuse(sample + " --points --eval-every 0 --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("box_room_{frames,bearings,points}.csv"), std::string::npos) << r.out;
+	const auto points = readCsv(m_dir / "out/box_room_points.csv");
+	const auto frames = readCsv(m_dir / "out/box_room_frames.csv");
+	ASSERT_EQ(frames.size(), 8u);
+	std::map<std::string, std::map<std::string, size_t>> perFrame;	// frame -> source -> count
+	for (const auto& p : points)
+	{
+		perFrame[p.at("frame")][p.at("source")]++;
+		EXPECT_GE(std::stod(p.at("z_m")), 0.05) << p.at("frame");
+		EXPECT_LE(std::stod(p.at("z_m")), 1.2) << p.at("frame");
+	}
+	for (const auto& f : frames)
+	{
+		auto& counts = perFrame[f.at("frame")];
+		EXPECT_EQ(counts["search"] + counts["grown"], std::stoul(f.at("visual_points"))) << f.at("frame");
+		EXPECT_EQ(counts["grown"], std::stoul(f.at("grown_points"))) << f.at("frame");
+		EXPECT_EQ(counts["remembered"], std::stoul(f.at("remembered_points"))) << f.at("frame");
+	}
+	size_t explained = 0;
+	for (const auto& b : readCsv(m_dir / "out/box_room_bearings.csv"))
+	{
+		if (b.at("visual_m").empty() || b.at("bridged") == "1") continue;
+		const double range = std::stod(b.at("visual_m")), bearing = std::stod(b.at("bearing_deg"));
+		const bool found = std::any_of(points.begin(), points.end(), [&](const auto& p) {
+			return p.at("frame") == b.at("frame") && std::abs(std::stod(p.at("range_m")) - range) < 0.0015 &&
+				std::abs(std::stod(p.at("bearing_deg")) - bearing) <= 2.5;
+		});
+		EXPECT_TRUE(found) << "frame " << b.at("frame") << ", " << bearing << " deg, " << range << " m";
+		explained += found;
+	}
+	EXPECT_GT(explained, 100u);
+	// Without --points, no such file.
+	ASSERT_EQ(fuse(sample + " --eval-every 0 --outdir plain").status, 0);
+	EXPECT_FALSE(fs::exists(m_dir / "plain/box_room_points.csv"));
 }
 
 TEST_F(LvfFuseCli, DumpConfigIsTheShippedFusionIni)

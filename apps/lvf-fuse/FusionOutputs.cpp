@@ -46,7 +46,7 @@ mrpt::obs::CObservationImage::Ptr evaluationImage(
 }
 
 FusionOutputs::FusionOutputs(
-	lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution)
+	lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution, bool writePoints)
 	: m_files(files),
 	  m_name(name),
 	  m_laserGrid(-5, 5, -5, 5, static_cast<float>(gridResolution)),
@@ -59,6 +59,15 @@ FusionOutputs::FusionOutputs(
 			 "hidden_range_error_m,seen_hidden,seen_recall\n";
 	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
 	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged,seen_truth_m\n";
+	if (writePoints)
+	{
+		m_pointsCsv.open(files.stage(name + "_points.csv"));
+		// Pixel and disparity in the rectified left image (none for a
+		// remembered point); position in the robot frame; bearing and
+		// horizontal range from the laser, in its frame, as the fused scan
+		// bins the points (the bearings CSV's bearing_deg).
+		m_pointsCsv << "frame,source,u,v,disparity_px,ncc,x_m,y_m,z_m,bearing_deg,range_m\n";
+	}
 }
 
 namespace
@@ -88,6 +97,25 @@ void FusionOutputs::addBearings(
 		m_bearingsCsv << ',' << int(i < r.bridged.size() && r.bridged[i]) << ','
 					  << (truth && !truth->seenRanges.empty() ? rangeField(truth->seenRanges[i]) : std::string()) << '\n';
 	}
+}
+
+void FusionOutputs::addPoints(
+	size_t frame, const mrpt::obs::CObservation2DRangeScan& laser, const lvf::fusion::CLaserStereoFusion::Result& r)
+{
+	auto write = [&](const lvf::depth::VisualPoint& p, const char* source) {
+		double lx, ly, lz;
+		laser.sensorPose.inverseComposePoint(p.robot.x(), p.robot.y(), p.robot.z(), lx, ly, lz);
+		if (std::isfinite(p.u))
+			m_pointsCsv << mrpt::format("%zu,%s,%.0f,%.0f,%.3f,%.3f,", frame, source, p.u, p.v, p.disparity, p.ncc);
+		else
+			m_pointsCsv << frame << ',' << source << ",,,,,";
+		m_pointsCsv << mrpt::format("%.3f,%.3f,%.3f,%.2f,%.3f\n", p.robot.x(), p.robot.y(), p.robot.z(),
+			mrpt::RAD2DEG(std::atan2(ly, lx)), std::hypot(lx, ly));
+	};
+	// HorizontalSurfaceGrowth appends its points after the search's.
+	const size_t searched = r.search.points.size() - r.grownPoints;
+	for (size_t k = 0; k < r.search.points.size(); k++) write(r.search.points[k], k < searched ? "search" : "grown");
+	for (const auto& p : r.remembered) write(p, "remembered");
 }
 
 void FusionOutputs::add(
@@ -120,12 +148,14 @@ void FusionOutputs::add(
 	else
 		m_csv << ",,,,,,,\n";
 	addBearings(frame, laser, r, truth);
+	if (m_pointsCsv.is_open()) addPoints(frame, laser, r);
 }
 
 void FusionOutputs::close()
 {
 	m_csv.close();
 	m_bearingsCsv.close();
+	if (m_pointsCsv.is_open()) m_pointsCsv.close();
 	lvf::common::saveGrid(m_laserGrid, m_files.stage(m_name + "_laser.gridmap.gz"));
 	lvf::common::saveGrid(m_fusedGrid, m_files.stage(m_name + "_fused.gridmap.gz"));
 	std::vector<cv::Mat> pictures;

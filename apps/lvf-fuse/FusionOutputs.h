@@ -6,6 +6,8 @@
 //                      and recall / phantom rate when a truth scan is known
 //   NAME_bearings.csv  per frame and laser bearing: laser, visual, fused and
 //                      truth range, in view, hidden -- to see where it errs
+//   NAME_points.csv    (asked for) per frame, every visual point the fused
+//                      scan was made from -- to see why a bearing got its range
 
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
@@ -35,7 +37,9 @@ struct FrameTruth
 class FusionOutputs
 {
    public:
-	FusionOutputs(lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution);
+	/** `writePoints`: also NAME_points.csv (large: thousands of rows a frame). */
+	FusionOutputs(
+		lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution, bool writePoints = false);
 
 	/** Inserts both scans at the odometry pose and logs the frame's figures. */
 	void add(
@@ -48,11 +52,13 @@ class FusionOutputs
 	lvf::common::StagedOutputFiles& m_files;
 	std::string m_name;
 	mrpt::maps::COccupancyGridMap2D m_laserGrid, m_fusedGrid;
-	std::ofstream m_csv, m_bearingsCsv;
+	std::ofstream m_csv, m_bearingsCsv, m_pointsCsv;  // the last open only if asked for
 
 	void addBearings(
 		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
 		const lvf::fusion::CLaserStereoFusion::Result& r, const std::optional<FrameTruth>& truth);
+	void addPoints(
+		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser, const lvf::fusion::CLaserStereoFusion::Result& r);
 };
 
 }  // namespace lvf::apps

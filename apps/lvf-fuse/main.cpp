@@ -44,7 +44,7 @@ struct Arguments
 	lvf::apps::SensorLabels labels;
 	double maxTimeDiff = 0.05, gridResolution = 0.05;
 	size_t evalEvery = 1;
-	bool dumpConfig = false, quiet = false, verbose = false;
+	bool dumpConfig = false, quiet = false, verbose = false, points = false;
 	std::string threads;  //!< OpenCV's pool as set, for the summary ("2 threads")
 };
 
@@ -69,6 +69,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argStereoLabel("", "stereo-label", "With the stereo pairs of this sensor (sensorLabel; default: the log's only stereo camera)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
 	TCLAP::ValueArg<int> argEvalEvery("", "eval-every", "Add the evaluation picture (EVAL) of every N-th frame to the output rawlog; 0: none (default 1: every frame; a picture is about the size of a stereo pair)", false, 1, "N", cmd);
+	TCLAP::SwitchArg argPoints("", "points", "Also write NAME_points.csv: every visual point of every frame (pixel, disparity, NCC, robot-frame position, bearing and range from the laser, found by the search, grown or remembered); thousands of rows a frame", cmd);
 	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m], 0.005 to 5 (default 0.05)", false, 0.05, "M", cmd);
 	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
@@ -95,6 +96,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	a.gridResolution = argGridRes.getValue();
 	a.evalEvery = static_cast<size_t>(argEvalEvery.getValue());
 	a.dumpConfig = argDumpConfig.getValue();
+	a.points = argPoints.getValue();
 	a.quiet = argQuiet.getValue();
 	a.verbose = argVerbose.getValue() && !a.quiet;
 	a.threads = threads.describe();
@@ -225,7 +227,7 @@ int run(int argc, char** argv)
 	}
 	else
 		outputPath = files.stage(name + "_fused.rawlog");
-	lvf::apps::FusionOutputs outputs(files, name, a.gridResolution);
+	lvf::apps::FusionOutputs outputs(files, name, a.gridResolution, a.points);
 	lvf::common::RawlogWriter out(outputPath,
 		in.sensoryFrames ? lvf::common::RawlogFormat::ActionsSensoryFrames : lvf::common::RawlogFormat::Observations);
 
@@ -274,7 +276,8 @@ int run(int argc, char** argv)
 	if (!a.quiet)
 		printSummary(a, in, stream, tally, truth, timer.Tac(), options.memory.maxTravel > 0,
 			(outputFile ? a.output : files.finalPath(name + "_fused.rawlog")) + ", " + name +
-				"_{laser,fused}.gridmap.gz, " + name + "_grids.png, " + name + "_{frames,bearings}.csv in " +
+				"_{laser,fused}.gridmap.gz, " + name + "_grids.png, " + name +
+				(a.points ? "_{frames,bearings,points}.csv in " : "_{frames,bearings}.csv in ") +
 				files.outputDir());
 	return lvf::common::kExitOk;
 }
