@@ -102,7 +102,6 @@ std::vector<float> ScanFusion::visualRanges(
 	};
 	const size_t n = laser.getScanSize();
 	std::vector<std::vector<Hit>> perBearing(n);
-	const double step = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
 	// Into the laser's frame: R^T (p - t), its rows taken once (MRPT's
 	// per-point inverseComposePoint costs about as much as the rest here).
 	const Eigen::Matrix3d laserToRobot = laser.sensorPose.getRotationMatrix().asEigen();
@@ -113,9 +112,7 @@ std::vector<float> ScanFusion::visualRanges(
 		// Projected onto the laser's (horizontal) plane.
 		const Eigen::Vector3d d = p.robot - laserOrigin;
 		const double x = xAxis * d, y = yAxis * d;
-		double bearing = std::atan2(y, x);
-		if (!laser.rightToLeft) bearing = -bearing;
-		const double index = (bearing + 0.5 * laser.aperture) / step;
+		const double index = rayIndexOf(laser, std::atan2(y, x));
 		const long i = std::lround(index);
 		if (i < 0 || i >= static_cast<long>(n)) continue;
 		perBearing[static_cast<size_t>(i)].push_back(
@@ -154,6 +151,7 @@ std::vector<float> ScanFusion::visualRanges(
 	{
 		std::vector<float> laserRanges(n);
 		for (size_t i = 0; i < n; i++) laserRanges[i] = laserRangeOrMax(laser, i);
+		const double step = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
 		const auto closed = bridgeNarrowGaps(out, laserRanges, step, m_options.bridgeWidth, m_options.clusterTolerance);
 		if (bridged) *bridged = closed;
 	}

@@ -1,3 +1,4 @@
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/simulation/StereoSeenTruth.h>
 #include <opencv2/calib3d.hpp>
@@ -54,14 +55,11 @@ std::vector<float> StereoSeenTruth::scan(
 	// The right camera's model as the renderer reads it (OpenCvCamera.h).
 	cv::projectPoints(inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), lvf::common::openCvCameraMatrix(right),
 		lvf::common::openCvDistortion(right), pixels);
-	const double step = scanGeometry.aperture / static_cast<double>(ranges.size() - 1);
-	const double first = scanGeometry.getScanAngle(0);
 	for (size_t k = 0; k < inRight.size(); k++)
 	{
 		if (!inside(pixels[k].x, pixels[k].y, right, m_margin)) continue;
 		const auto& p = inLaser[k];
-		const double bearing = std::atan2(p.y, p.x);
-		const long ray = std::lround((scanGeometry.rightToLeft ? bearing - first : first - bearing) / step);
+		const long ray = std::lround(rayIndexOf(scanGeometry, std::atan2(p.y, p.x)));
 		if (ray < 0 || ray >= static_cast<long>(ranges.size())) continue;
 		ranges[static_cast<size_t>(ray)] = std::min(ranges[static_cast<size_t>(ray)], static_cast<float>(std::hypot(p.x, p.y)));
 	}
