@@ -28,6 +28,7 @@ void HorizontalSurfaceGrowth::TOptions::loadFromConfigFile(
 	heightTolerance = ini.real("height_tolerance", heightTolerance, 0, 10);
 	minRangeStep = ini.real("min_range_step", minRangeStep, 0, 10);
 	witnessStrides = ini.integer("witness_strides", witnessStrides, 1, 1000);
+	maxSlope = ini.real("max_slope", maxSlope, 0, 1000);
 	ini.rejectUnknownKeys();
 }
 
@@ -44,6 +45,7 @@ void HorizontalSurfaceGrowth::TOptions::saveToConfigFile(
 	writeOption(c, s, "height_tolerance", heightTolerance, "two search points are on one horizontal surface if their heights differ by at most this [m]");
 	writeOption(c, s, "min_range_step", minRangeStep, "and the one nearer the image's edge is at least this much nearer the robot [m]");
 	writeOption(c, s, "witness_strides", witnessStrides, "and they are at most this many pixel_stride steps apart on their column");
+	writeOption(c, s, "max_slope", maxSlope, "and their heights differ by at most this fraction of their ranges' difference (a leg's points, noisy in range, are no surface) [m/m]");
 }
 
 namespace
@@ -156,8 +158,9 @@ bool HorizontalSurfaceGrowth::hasWitness(
 	{
 		const VisualPoint& q = points[j];
 		const double rows = step * (p.v - q.v);
-		if (rows > 0 && rows <= o.witnessStrides * stride && std::abs(q.robot.z() - p.robot.z()) <= o.heightTolerance &&
-			groundRange(q) >= groundRange(p) + o.minRangeStep)
+		const double rise = std::abs(q.robot.z() - p.robot.z()), run = groundRange(q) - groundRange(p);
+		if (rows > 0 && rows <= o.witnessStrides * stride && rise <= o.heightTolerance && run >= o.minRangeStep &&
+			rise <= o.maxSlope * run)
 			return true;
 	}
 	return false;
