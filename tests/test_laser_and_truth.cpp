@@ -130,3 +130,55 @@ TEST(ObstacleGrid, OccupiesExactlyTheCellsUnderBandBoxes)
 	EXPECT_LE(occupied, 10u * 6u);
 	EXPECT_GT(grid.getPos(3.0, 1.0), 0.5f);
 }
+
+namespace
+{
+/** A 181-ray scan over 180 degrees, 0.3 m up, every truth range `range`. */
+mrpt::obs::CObservation2DRangeScan halfCircleScan()
+{
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = float(M_PI);
+	scan.rightToLeft = true;
+	scan.resizeScan(181);
+	for (size_t i = 0; i < 181; i++) scan.setScanRange(i, 8.f), scan.setScanRangeValidity(i, true);
+	scan.sensorPose = mrpt::poses::CPose3D(0, 0, 0.3, 0, 0, 0);
+	return scan;
+}
+}  // namespace
+
+// Which bearings a camera with a barrel lens sees. A lens polynomial has a
+// largest image radius: past it (k1 = -0.2: 52 degrees off the axis)
+// projecting a point through it folds the point back towards the image, so
+// projecting the scan's bearings (MRPT's projectPoint_with_distortion, as
+// bearingsInView did) put bearings 57-68 degrees to the side in view of a
+// camera that sees 41 degrees either way (measured with that version). The view is the image's border
+// undistorted: the camera's own field of view, wider than the pin-hole's
+// 35.4 degrees by what the lens bends in.
+TEST(BearingsInView, ABarrelLensSeesWiderButNotItsFoldedBackSides)
+{
+	const auto scan = halfCircleScan();
+	mrpt::obs::CObservationStereoImages stereo;
+	stereo.cameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0, 0, 1.0, -M_PI_2, 0, -M_PI_2));
+	auto& cam = stereo.leftCamera;
+	cam.ncols = 640, cam.nrows = 480;
+	cam.fx(450), cam.fy(450), cam.cx(319.5), cam.cy(239.5);
+	cam.dist.fill(0);
+	const std::vector<float> truth(181, 3.f);
+	const lvf::HeightBand band{0.05, 1.2};
+	const auto pinhole = lvf::metrics::bearingsInView(scan, truth, stereo, band, 8.0);
+	cam.dist[0] = -0.2;
+	const auto barrel = lvf::metrics::bearingsInView(scan, truth, stereo, band, 8.0);
+	// Half the field of view: atan(319.5 / 450) = 35.4 degrees for the
+	// pin-hole; with the lens, the ideal x where x - 0.2 x^3 = 319.5 / 450,
+	// 0.826: 39.6 degrees on the image's middle row, and wider below it,
+	// where the band's foot lies (0.95 m under the camera, 3 m out: to 41
+	// degrees, by the lens model x_d = x (1 - 0.2 r^2) forward).
+	for (size_t i = 0; i < 181; i++)
+	{
+		const double off = std::abs(int(i) - 90);	// degrees off the camera's axis
+		if (off <= 34) { EXPECT_TRUE(pinhole[i]) << off; }
+		if (off >= 37) { EXPECT_FALSE(pinhole[i]) << off; }
+		if (off <= 41) { EXPECT_TRUE(barrel[i]) << off; }
+		if (off >= 42) { EXPECT_FALSE(barrel[i]) << off; }
+	}
+}

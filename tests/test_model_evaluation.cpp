@@ -219,6 +219,49 @@ TEST(OpenCvCamera, ReadsTheLensAsMrptsRectifierDoesWithTheRationalTerms)
 	EXPECT_THROW(lvf::common::openCvDistortion(cam), std::invalid_argument);
 }
 
+// What a camera sees, and where: the image's border bounds the view, the
+// lens places the pixel. Checked against the projections' own formulas.
+TEST(OpenCvCamera, PixelsInViewFollowTheLensToTheImageBorder)
+{
+	mrpt::img::TCamera cam;
+	cam.ncols = 640, cam.nrows = 480;
+	cam.setIntrinsicParamsFromValues(450, 450, 319.5, 239.5);
+	auto deg = [](double a) { return a * M_PI / 180; };
+	// On the axis, a hundredth of a pixel inside the last column (639), half
+	// a pixel beyond it, behind the camera, and 37 degrees to the side (a
+	// pin-hole sees 35.4).
+	auto atColumn = [](double u) { return cv::Point3d((u - 319.5) / 450 * 2, 0, 2); };
+	const std::vector<cv::Point3d> points{{0, 0, 2}, atColumn(638.99), atColumn(639.5), {0, 0, -2},
+		{std::sin(deg(37)), 0, std::cos(deg(37))}};
+	const auto pinhole = lvf::common::pixelsInView(points, cam);
+	ASSERT_TRUE(pinhole[0] && pinhole[1]);
+	EXPECT_NEAR(pinhole[0]->x, 319.5, 1e-9);
+	EXPECT_NEAR(pinhole[0]->y, 239.5, 1e-9);
+	EXPECT_NEAR(pinhole[1]->x, 638.99, 1e-9);
+	EXPECT_FALSE(pinhole[2]);
+	EXPECT_FALSE(pinhole[3]);
+	EXPECT_FALSE(pinhole[4]);
+	// An equidistant fish-eye (kannala_brandt, all terms 0: r = f theta)
+	// sees 37 degrees at 450 * 0.6458 px from the centre.
+	cam.distortion = mrpt::img::DistortionModel::kannala_brandt;
+	const auto fisheye = lvf::common::pixelsInView(points, cam);
+	ASSERT_TRUE(fisheye[4]);
+	EXPECT_NEAR(fisheye[4]->x, 319.5 + 450 * deg(37), 1e-6);
+	EXPECT_NEAR(fisheye[4]->y, 239.5, 1e-6);
+	EXPECT_FALSE(fisheye[3]);
+	// A rational lens: the pixel is cv::projectPoints' with all eight terms.
+	cam.distortion = mrpt::img::DistortionModel::plumb_bob;
+	cam.dist = {-0.25, 0.08, 0.0005, -0.0004, -0.01, 0.05, 0.01, 0.002};
+	const std::vector<cv::Point3d> corner{{0.55, 0.40, 1.0}};
+	std::vector<cv::Point2d> expected;
+	cv::projectPoints(corner, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), cv::Mat(lvf::common::openCvCameraMatrix(cam)),
+		std::vector<double>(cam.dist.begin(), cam.dist.end()), expected);
+	const auto rational = lvf::common::pixelsInView(corner, cam);
+	ASSERT_TRUE(rational[0]) << expected[0];
+	EXPECT_NEAR(rational[0]->x, expected[0].x, 1e-9);
+	EXPECT_NEAR(rational[0]->y, expected[0].y, 1e-9);
+}
+
 TEST(RectifiedStereo, FishEyeCalibrationIsRefusedByName)
 {
 	// kannala_brandt has no pin-hole form in OpenCV's stereoRectify; read as

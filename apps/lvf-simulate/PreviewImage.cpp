@@ -1,6 +1,6 @@
 #include "PreviewImage.h"
 
-#include <mrpt/vision/pinhole.h>
+#include <lvfusion/common/OpenCvCamera.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -8,21 +8,6 @@
 
 namespace lvf::apps
 {
-namespace
-{
-/** Draws the robot-frame point (x, y, z) as a dot if the left camera sees it. */
-void drawPoint(
-	cv::Mat& canvas, const mrpt::obs::CObservationStereoImages& stereo,
-	double x, double y, double z, const cv::Scalar& colour)
-{
-	const auto p = mrpt::poses::CPose3D(stereo.cameraPose).inverseComposePoint({x, y, z});
-	if (p.z <= 0.05) return;
-	mrpt::img::TPixelCoordf px;
-	mrpt::vision::pinhole::projectPoint_with_distortion(p, stereo.leftCamera, px);
-	cv::circle(canvas, cv::Point(cvRound(px.x), cvRound(px.y)), 2, colour, cv::FILLED);
-}
-}  // namespace
-
 void writePreviewImage(
 	const std::string& path,
 	const lvf::simulation::CStereoLaserSimulator::Frame& frame,
@@ -30,9 +15,15 @@ void writePreviewImage(
 {
 	const auto& stereo = *frame.stereo;
 	const auto& scan = *frame.scan;
-	cv::Mat canvas;
-	cv::cvtColor(stereo.imageLeft.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), canvas,
-				 cv::COLOR_GRAY2BGR);
+	const mrpt::poses::CPose3D camera(stereo.cameraPose);
+	// Robot-frame points to mark, in the camera's frame, and their colours.
+	std::vector<cv::Point3d> points;
+	std::vector<cv::Scalar> colours;
+	auto mark = [&](double x, double y, double z, const cv::Scalar& colour) {
+		const auto p = camera.inverseComposePoint({x, y, z});
+		points.emplace_back(p.x, p.y, p.z);
+		colours.push_back(colour);
+	};
 	const auto& laser = scan.sensorPose;
 	for (size_t i = 0; i < scan.getScanSize(); i++)
 	{
@@ -42,17 +33,23 @@ void writePreviewImage(
 			const double r = frame.truthScan[i];
 			double x, y, z;
 			laser.composePoint(r * std::cos(b), r * std::sin(b), 0, x, y, z);
-			for (double h = robot.obstacleMinHeight; h <= robot.height; h += 0.05)
-				drawPoint(canvas, stereo, x, y, h, {0, 0, 255});
+			for (double h = robot.obstacleMinHeight; h <= robot.height; h += 0.05) mark(x, y, h, {0, 0, 255});
 		}
 		if (scan.getScanRangeValidity(i))
 		{
 			const double r = scan.getScanRange(i);
 			double x, y, z;
 			laser.composePoint(r * std::cos(b), r * std::sin(b), 0, x, y, z);
-			drawPoint(canvas, stereo, x, y, z, {0, 255, 0});
+			mark(x, y, z, {0, 255, 0});
 		}
 	}
+	cv::Mat canvas;
+	cv::cvtColor(stereo.imageLeft.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), canvas,
+				 cv::COLOR_GRAY2BGR);
+	// Only what the left camera sees, through its lens.
+	const auto pixels = lvf::common::pixelsInView(points, stereo.leftCamera);
+	for (size_t k = 0; k < points.size(); k++)
+		if (pixels[k]) cv::circle(canvas, cv::Point(cvRound(pixels[k]->x), cvRound(pixels[k]->y)), 2, colours[k], cv::FILLED);
 	cv::imwrite(path, canvas);
 }
 

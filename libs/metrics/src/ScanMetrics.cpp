@@ -1,6 +1,6 @@
 #include <lvfusion/common/LaserRange.h>
+#include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/metrics/ScanMetrics.h>
-#include <mrpt/vision/pinhole.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +14,10 @@ std::vector<bool> bearingsInView(
 	double rangeIfNoTruth)
 {
 	const size_t n = scan.getScanSize();
-	std::vector<bool> inView(n, false);
 	const mrpt::poses::CPose3D camera(stereo.cameraPose);
-	const auto& cam = stereo.leftCamera;
+	// Every bearing's band column, sampled every 5 cm, in the camera frame.
+	std::vector<cv::Point3d> points;
+	std::vector<size_t> bearingOf;
 	for (size_t i = 0; i < n; i++)
 	{
 		const double range = std::isfinite(truth[i]) ? truth[i] : rangeIfNoTruth;
@@ -24,16 +25,21 @@ std::vector<bool> bearingsInView(
 		double x, y, z;
 		scan.sensorPose.composePoint(
 			range * std::cos(bearing), range * std::sin(bearing), 0, x, y, z);
-		for (double h = band.low; h <= band.high + 1e-9 && !inView[i]; h += 0.05)
+		for (double h = band.low; h <= band.high + 1e-9; h += 0.05)
 		{
 			const mrpt::math::TPoint3D p = camera.inverseComposePoint({x, y, h});
 			if (p.z <= 0) continue;
-			mrpt::img::TPixelCoordf px;
-			mrpt::vision::pinhole::projectPoint_with_distortion(p, cam, px);
-			inView[i] = px.x >= 0 && px.y >= 0 && px.x <= cam.ncols - 1 &&
-				px.y <= cam.nrows - 1;
+			points.emplace_back(p.x, p.y, p.z);
+			bearingOf.push_back(i);
 		}
 	}
+	// Through the lens, every coefficient (lvf::common::pixelsInView; MRPT's
+	// projectPoint_with_distortion, used before, reads five and folds the
+	// points of a wide scan's side bearings back into the image).
+	const auto pixels = lvf::common::pixelsInView(points, stereo.leftCamera);
+	std::vector<bool> inView(n, false);
+	for (size_t k = 0; k < points.size(); k++)
+		if (pixels[k]) inView[bearingOf[k]] = true;
 	return inView;
 }
 

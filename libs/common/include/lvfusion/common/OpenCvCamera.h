@@ -7,6 +7,7 @@
 #include <mrpt/img/TCamera.h>
 #include <opencv2/core.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace lvf::common
@@ -31,5 +32,16 @@ std::vector<double> openCvDistortion(const mrpt::img::TCamera& camera);
 
 /** openCvDistortion(camera) is not empty. */
 bool hasLensDistortion(const mrpt::img::TCamera& camera);
+
+/** The pixel of each camera-frame point (x right, y down, z forward) that
+ * the camera sees, through its lens; none for a point behind the camera or
+ * outside its field of view. The field of view is the image's border
+ * undistorted (OpenCV, every coefficient; cv::fisheye for kannala_brandt),
+ * and a point is tested against it on the ideal image plane before it is
+ * projected: a lens polynomial has a largest image radius, and projecting
+ * points beyond it folds them back into the image (k1 = -0.2: a point 60
+ * degrees to the side of a camera that sees 41). */
+std::vector<std::optional<cv::Point2d>> pixelsInView(
+	const std::vector<cv::Point3d>& points, const mrpt::img::TCamera& camera);
 
 }  // namespace lvf::common

@@ -14,8 +14,9 @@ using lvf::HeightBand;
 
 /** Per bearing: does the left camera see the obstacle column there? True when
  * some point of the band (sampled every 5 cm) at the truth range on that
- * bearing (or at `rangeIfNoTruth`) projects inside the left image, with the
- * stored distortion. Scan and cameras are both relative to the robot. */
+ * bearing (or at `rangeIfNoTruth`) lies inside the left image, with the
+ * stored distortion (every coefficient, k4-k6 included). Scan and cameras
+ * are both relative to the robot. */
 std::vector<bool> bearingsInView(
 	const mrpt::obs::CObservation2DRangeScan& scan,
 	const std::vector<float>& truth,
