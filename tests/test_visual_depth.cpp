@@ -263,13 +263,13 @@ TEST(VisualDepth, FloorDisparityMarginFindsLowObstaclesStandingOnTheFloor)
 
 namespace
 {
-/** A 1-degree scan over 180 degrees, every bearing 8 m. */
-mrpt::obs::CObservation2DRangeScan oneDegreeScan()
+/** A scan over 180 degrees, a ray every `step` degrees, every bearing 8 m. */
+mrpt::obs::CObservation2DRangeScan oneDegreeScan(double step = 1.0)
 {
 	mrpt::obs::CObservation2DRangeScan scan;
 	scan.aperture = static_cast<float>(M_PI);
 	scan.rightToLeft = true;
-	scan.resizeScan(181);
+	scan.resizeScan(size_t(std::lround(180 / step)) + 1);
 	for (size_t i = 0; i < scan.getScanSize(); i++) scan.setScanRange(i, 8.f), scan.setScanRangeValidity(i, true);
 	return scan;
 }
@@ -361,4 +361,47 @@ TEST(ScanFusion, ABinWithTooFewPointsCountsItsNeighbours)
 	// own point far behind theirs finds no cluster behind it.
 	const std::vector<depth::VisualPoint> behind{pointAt(4.50, 0.2), pointAt(4.02, -0.9), pointAt(4.03, 1.1)};
 	EXPECT_TRUE(std::isinf(fusion::ScanFusion(options).visualRanges(scan, behind)[90]));
+}
+
+TEST(ScanFusion, AFineLaserGathersAsManyPointsABearingAsTheCoarseOne)
+{
+	// A face 2 m out from 3 degrees right to 3 left of bearing 0, a visual
+	// point every 0.3 degrees: three or four in a 1-degree bin, one or none
+	// in a quarter-degree ray's own share. On a quarter-degree laser (a
+	// Hokuyo's) each ray's 1-degree bin, centred on it, still holds enough;
+	// bins as narrow as the rays find nothing (neighbour_bins, which pools
+	// a few bins where one has too few points, off in both).
+	const auto scan = oneDegreeScan(0.25);
+	ASSERT_EQ(scan.getScanSize(), 721u);
+	std::vector<depth::VisualPoint> points;
+	for (double offset = -3.0; offset <= 3.0 + 1e-9; offset += 0.3) points.push_back(pointAt(2.0, offset));
+	fusion::ScanFusion::TOptions options;
+	options.neighbourBins = 0;
+	auto raysOnTheFace = [&](const std::vector<float>& ranges) {
+		size_t n = 0;
+		for (size_t i = 0; i < ranges.size(); i++) n += std::abs(ranges[i] - 2.0f) < 1e-3f;
+		return n;
+	};
+	const auto degreeBins = fusion::ScanFusion(options).visualRanges(scan, points);
+	options.binWidthDeg = 0.25;
+	const auto rayBins = fusion::ScanFusion(options).visualRanges(scan, points);
+	std::cout << "rays on the face: " << raysOnTheFace(degreeBins) << " with 1-degree bins, " << raysOnTheFace(rayBins)
+			  << " with bins a ray wide\n";
+	// Rays 360 +- 10 (+-2.5 degrees): each bin lies on the face.
+	for (size_t i = 350; i <= 370; i++) EXPECT_NEAR(degreeBins[i], 2.0, 1e-3) << "ray " << i;
+	// Nothing past the face's ends by more than half a bin.
+	for (size_t i = 0; i < degreeBins.size(); i++)
+	{
+		if (std::abs(double(i) - 360) * 0.25 > 3.0 + 0.5)
+		{
+			EXPECT_TRUE(std::isinf(degreeBins[i])) << "ray " << i;
+		}
+	}
+	EXPECT_EQ(raysOnTheFace(rayBins), 0u);
+	// On a 1-degree laser the option changes nothing: a bin is never
+	// narrower than the rays' spacing.
+	const auto coarse = oneDegreeScan();
+	const auto narrowOption = fusion::ScanFusion(options).visualRanges(coarse, points);
+	options.binWidthDeg = 1.0;
+	EXPECT_EQ(narrowOption, fusion::ScanFusion(options).visualRanges(coarse, points));
 }

@@ -2,6 +2,7 @@
 #include <lvfusion/common/LaserRange.h>
 #include <lvfusion/fusion/NarrowGapBridging.h>
 #include <lvfusion/fusion/ScanFusion.h>
+#include <mrpt/core/bits_math.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,7 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	rangeSupport = ini.real("range_support", rangeSupport, 0, 10);
 	bridgeWidth = ini.real("bridge_width", bridgeWidth, 0, 10);
 	neighbourBins = ini.integer("neighbour_bins", neighbourBins, 0, 10);
+	binWidthDeg = ini.real("bin_width_deg", binWidthDeg, 0, 360);
 	ini.rejectUnknownKeys();
 }
 
@@ -34,6 +36,7 @@ void ScanFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "central_share", centralShare, "the bearing's range is the nearest of its cluster's min_points points nearest the bin's bearing, and of any others nearer it than this fraction of a bin; 0: off [0..0.5]");
 	writeOption(c, s, "range_support", rangeSupport, "that nearest point needs another point of the cluster within this much range of it (else the next one; all isolated: their median); 0: off [m]");
 	writeOption(c, s, "neighbour_bins", neighbourBins, "a bin with fewer than min_points points of its own may count those of the bins up to this many either side, some on each side (its own nearest point with such a cluster behind it sets the range); 0: off");
+	writeOption(c, s, "bin_width_deg", binWidthDeg, "a bearing's bin of visual points, centred on it, at least the laser's ray spacing: with a finer laser neighbouring bins overlap [deg]");
 	writeOption(c, s, "bridge_width", bridgeWidth, "close gaps in an edge at most this wide between two bearings whose ranges agree within cluster_tolerance, one of them set by vision: bearings between that are farther than both, and not placed by vision within cluster_tolerance of them, take the line between them; 0: off [m]");
 }
 
@@ -63,32 +66,40 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 	return median->range;
 }
 
-float ScanFusion::rangeWithNeighbours(const std::vector<std::vector<Hit>>& perBearing, size_t i) const
+float ScanFusion::rangeWithNeighbours(const std::vector<Hit>& own, const std::vector<Hit>& around) const
 {
-	std::vector<const Hit*> own;
-	for (const Hit& h : perBearing[i]) own.push_back(&h);
-	std::sort(own.begin(), own.end(), [](const Hit* a, const Hit* b) { return a->range < b->range; });
-	const long first = std::max(0L, long(i) - m_options.neighbourBins);
-	const long last = std::min(long(perBearing.size()) - 1, long(i) + m_options.neighbourBins);
-	for (const Hit* start : own)
+	std::vector<float> starts;
+	for (const Hit& h : own) starts.push_back(h.range);
+	std::sort(starts.begin(), starts.end());
+	for (const float start : starts)
 	{
 		// The points of this bin and its neighbours within the tolerance
 		// behind this one. The surface must go on into a bin on each side:
 		// one-sided, its points beside the ray would decide (a wrong match
 		// that does not reach the next bins, or an obstacle's end).
-		size_t count = 0;
-		bool supported = m_options.rangeSupport <= 0, below = false, above = false;
-		for (long j = first; j <= last; j++)
-			for (const Hit& h : perBearing[size_t(j)])
-			{
-				if (h.range < start->range || h.range - start->range > m_options.clusterTolerance) continue;
-				count++;
-				below |= j < long(i), above |= j > long(i);
-				supported |= &h != start && h.range - start->range <= m_options.rangeSupport;
-			}
-		if (count >= size_t(m_options.minPoints) && supported && below && above) return start->range;
+		size_t count = 0, atStart = 0;
+		bool below = false, above = false, supported = m_options.rangeSupport <= 0;
+		for (const Hit& h : around)
+		{
+			if (h.range < start || h.range - start > m_options.clusterTolerance) continue;
+			count++;
+			below |= h.offset < -0.5f, above |= h.offset >= 0.5f;
+			if (h.range - start <= m_options.rangeSupport) supported |= h.range != start || ++atStart > 1;
+		}
+		if (count >= size_t(m_options.minPoints) && supported && below && above) return start;
 	}
 	return std::numeric_limits<float>::infinity();
+}
+
+std::vector<ScanFusion::Hit> ScanFusion::hitsAround(
+	const std::vector<PlanePoint>& sorted, size_t i, double binRays, double halfWidths) const
+{
+	const double lo = double(i) - halfWidths * binRays, hi = double(i) + halfWidths * binRays;
+	auto it = std::lower_bound(sorted.begin(), sorted.end(), lo, [](const PlanePoint& p, double x) { return p.index < x; });
+	std::vector<Hit> hits;
+	for (; it != sorted.end() && it->index < hi; ++it)
+		hits.push_back({it->range, static_cast<float>((it->index - double(i)) / binRays), it->atImageEdge});
+	return hits;
 }
 
 std::vector<float> ScanFusion::visualRanges(
@@ -101,30 +112,39 @@ std::vector<float> ScanFusion::visualRanges(
 		return searched && std::isfinite(u) && (u - searched->first < searched->step || searched->last - u < searched->step);
 	};
 	const size_t n = laser.getScanSize();
-	std::vector<std::vector<Hit>> perBearing(n);
+	const double rayStep = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
+	// A bin's width in rays: at least one.
+	const double binRays = std::max(1.0, mrpt::DEG2RAD(m_options.binWidthDeg) / rayStep);
 	// Into the laser's frame: R^T (p - t), its rows taken once (MRPT's
 	// per-point inverseComposePoint costs about as much as the rest here).
 	const Eigen::Matrix3d laserToRobot = laser.sensorPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d laserOrigin(laser.sensorPose.x(), laser.sensorPose.y(), laser.sensorPose.z());
 	const Eigen::RowVector3d xAxis = laserToRobot.col(0).transpose(), yAxis = laserToRobot.col(1).transpose();
+	std::vector<PlanePoint> onPlane;
+	onPlane.reserve(points.size());
 	for (const auto& p : points)
 	{
 		// Projected onto the laser's (horizontal) plane.
 		const Eigen::Vector3d d = p.robot - laserOrigin;
 		const double x = xAxis * d, y = yAxis * d;
-		const double index = rayIndexOf(laser, std::atan2(y, x));
-		const long i = std::lround(index);
-		if (i < 0 || i >= static_cast<long>(n)) continue;
-		perBearing[static_cast<size_t>(i)].push_back(
-			{static_cast<float>(std::hypot(x, y)), static_cast<float>(index - double(i)), atImageEdge(p.u)});
+		onPlane.push_back({rayIndexOf(laser, std::atan2(y, x)), static_cast<float>(std::hypot(x, y)), atImageEdge(p.u)});
 	}
+	std::sort(onPlane.begin(), onPlane.end(), [](const PlanePoint& a, const PlanePoint& b) { return a.index < b.index; });
+
 	std::vector<float> out(n, std::numeric_limits<float>::infinity());
 	const size_t need = static_cast<size_t>(m_options.minPoints);
 	const float slack = static_cast<float>(m_options.centreSlack);
 	for (size_t i = 0; i < n; i++)
 	{
-		auto& hits = perBearing[i];
-		if (hits.size() < need) continue;
+		auto hits = hitsAround(onPlane, i, binRays, 0.5);
+		if (hits.empty()) continue;
+		if (hits.size() < need)
+		{
+			// Too few of its own: with its neighbours' (neighbour_bins).
+			if (m_options.neighbourBins > 0)
+				out[i] = rangeWithNeighbours(hits, hitsAround(onPlane, i, binRays, m_options.neighbourBins + 0.5));
+			continue;
+		}
 		std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.range < b.range; });
 		// The nearest run of at least `need` points spanning at most the
 		// tolerance in range...
@@ -144,15 +164,11 @@ std::vector<float> ScanFusion::visualRanges(
 			break;
 		}
 	}
-	if (m_options.neighbourBins > 0)
-		for (size_t i = 0; i < n; i++)
-			if (!perBearing[i].empty() && perBearing[i].size() < need) out[i] = rangeWithNeighbours(perBearing, i);
 	if (m_options.bridgeWidth > 0)
 	{
 		std::vector<float> laserRanges(n);
 		for (size_t i = 0; i < n; i++) laserRanges[i] = laserRangeOrMax(laser, i);
-		const double step = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
-		const auto closed = bridgeNarrowGaps(out, laserRanges, step, m_options.bridgeWidth, m_options.clusterTolerance);
+		const auto closed = bridgeNarrowGaps(out, laserRanges, rayStep, m_options.bridgeWidth, m_options.clusterTolerance);
 		if (bridged) *bridged = closed;
 	}
 	else if (bridged)
