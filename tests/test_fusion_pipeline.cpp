@@ -4,6 +4,7 @@
 // metrics against the simulator's truth scans.
 
 #include <gtest/gtest.h>
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
@@ -373,4 +374,34 @@ TEST(FusionPipeline, WarningsAndEachFramesFiguresGoThroughMrptsLogger)
 				  std::to_string(second.scan->getScanSize()) + " bearings nearer than the laser"),
 		std::string::npos)
 		<< logged[0].second;
+}
+
+// A laser mounted upside down (rolled 180 degrees about its x axis, as many
+// robots carry one) scans the same rays in the opposite order: its fused
+// scan must be the upright one's, ray for ray reversed.
+TEST(FusionPipeline, AnUpsideDownLaserFusesTheSameRays)
+{
+	const auto world = simulation::generateRandomWorld(3);
+	simulation::CStereoLaserSimulator sim(world, simulation::CStereoLaserSimulator::TOptions());
+	const auto f = sim.simulateNextFrame(false);
+	const auto& upright = *f.scan;
+	mrpt::obs::CObservation2DRangeScan flipped = upright;
+	const auto& p = upright.sensorPose;
+	flipped.sensorPose = mrpt::poses::CPose3D(p.x(), p.y(), p.z(), p.yaw(), p.pitch(), p.roll() + M_PI);
+	const size_t n = upright.getScanSize();
+	for (size_t i = 0; i < n; i++)
+	{
+		flipped.setScanRange(i, upright.getScanRange(n - 1 - i));
+		flipped.setScanRangeValidity(i, upright.getScanRangeValidity(n - 1 - i));
+	}
+	fusion::CLaserStereoFusion a, b;
+	const auto ra = a.process(upright, *f.stereo, "upright"), rb = b.process(flipped, *f.stereo, "upside down");
+	size_t shortened = 0;
+	for (size_t i = 0; i < n; i++)
+	{
+		EXPECT_NEAR(rb.fused->getScanRange(n - 1 - i), ra.fused->getScanRange(i), 1e-4) << "ray " << i;
+		shortened += ra.fused->getScanRange(i) < laserRangeOrMax(upright, i);
+	}
+	EXPECT_GT(shortened, 5u) << "vision shortened too few rays to compare";
+	EXPECT_EQ(ra.segments.size(), rb.segments.size());
 }
