@@ -377,31 +377,40 @@ TEST(FusionPipeline, WarningsAndEachFramesFiguresGoThroughMrptsLogger)
 }
 
 // A laser mounted upside down (rolled 180 degrees about its x axis, as many
-// robots carry one) scans the same rays in the opposite order: its fused
-// scan must be the upright one's, ray for ray reversed.
-TEST(FusionPipeline, AnUpsideDownLaserFusesTheSameRays)
+// robots carry one), or one that lists its rays clockwise (rightToLeft
+// false), scans the same rays in the opposite order: its fused scan must be
+// the upright one's, ray for ray reversed.
+TEST(FusionPipeline, AnUpsideDownOrClockwiseLaserFusesTheSameRays)
 {
 	const auto world = simulation::generateRandomWorld(3);
 	simulation::CStereoLaserSimulator sim(world, simulation::CStereoLaserSimulator::TOptions());
 	const auto f = sim.simulateNextFrame(false);
 	const auto& upright = *f.scan;
-	mrpt::obs::CObservation2DRangeScan flipped = upright;
-	const auto& p = upright.sensorPose;
-	flipped.sensorPose = mrpt::poses::CPose3D(p.x(), p.y(), p.z(), p.yaw(), p.pitch(), p.roll() + M_PI);
 	const size_t n = upright.getScanSize();
-	for (size_t i = 0; i < n; i++)
-	{
-		flipped.setScanRange(i, upright.getScanRange(n - 1 - i));
-		flipped.setScanRangeValidity(i, upright.getScanRangeValidity(n - 1 - i));
-	}
-	fusion::CLaserStereoFusion a, b;
-	const auto ra = a.process(upright, *f.stereo, "upright"), rb = b.process(flipped, *f.stereo, "upside down");
+	auto reversed = [&](mrpt::obs::CObservation2DRangeScan scan) {
+		for (size_t i = 0; i < n; i++)
+		{
+			scan.setScanRange(i, upright.getScanRange(n - 1 - i));
+			scan.setScanRangeValidity(i, upright.getScanRangeValidity(n - 1 - i));
+		}
+		return scan;
+	};
+	auto upsideDown = reversed(upright);
+	const auto& p = upright.sensorPose;
+	upsideDown.sensorPose = mrpt::poses::CPose3D(p.x(), p.y(), p.z(), p.yaw(), p.pitch(), p.roll() + M_PI);
+	auto clockwise = reversed(upright);
+	clockwise.rightToLeft = false;
+
+	const auto expected = fusion::CLaserStereoFusion().process(upright, *f.stereo, "upright");
 	size_t shortened = 0;
-	for (size_t i = 0; i < n; i++)
-	{
-		EXPECT_NEAR(rb.fused->getScanRange(n - 1 - i), ra.fused->getScanRange(i), 1e-4) << "ray " << i;
-		shortened += ra.fused->getScanRange(i) < laserRangeOrMax(upright, i);
-	}
+	for (size_t i = 0; i < n; i++) shortened += expected.fused->getScanRange(i) < laserRangeOrMax(upright, i);
 	EXPECT_GT(shortened, 5u) << "vision shortened too few rays to compare";
-	EXPECT_EQ(ra.segments.size(), rb.segments.size());
+	for (const auto* scan : {&upsideDown, &clockwise})
+	{
+		SCOPED_TRACE(scan == &clockwise ? "clockwise" : "upside down");
+		const auto r = fusion::CLaserStereoFusion().process(*scan, *f.stereo, "frame");
+		EXPECT_EQ(r.segments.size(), expected.segments.size());
+		for (size_t i = 0; i < n; i++)
+			EXPECT_NEAR(r.fused->getScanRange(n - 1 - i), expected.fused->getScanRange(i), 1e-4) << "ray " << i;
+	}
 }
