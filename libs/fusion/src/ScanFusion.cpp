@@ -91,15 +91,16 @@ float ScanFusion::rangeWithNeighbours(const std::vector<Hit>& own, const std::ve
 	return std::numeric_limits<float>::infinity();
 }
 
-std::vector<ScanFusion::Hit> ScanFusion::hitsAround(
-	const std::vector<PlanePoint>& sorted, size_t i, double binRays, double halfWidths) const
+void ScanFusion::hitsAround(const std::vector<std::vector<PlanePoint>>& byRay, size_t i, double binRays,
+	double halfWidths, std::vector<Hit>& hits) const
 {
 	const double lo = double(i) - halfWidths * binRays, hi = double(i) + halfWidths * binRays;
-	auto it = std::lower_bound(sorted.begin(), sorted.end(), lo, [](const PlanePoint& p, double x) { return p.index < x; });
-	std::vector<Hit> hits;
-	for (; it != sorted.end() && it->index < hi; ++it)
-		hits.push_back({it->range, static_cast<float>((it->index - double(i)) / binRays), it->atImageEdge});
-	return hits;
+	const long last = long(byRay.size()) - 1;
+	hits.clear();
+	for (long j = std::max(0L, std::lround(lo)); j <= std::min(last, std::lround(hi)); j++)
+		for (const PlanePoint& p : byRay[size_t(j)])
+			if (p.index >= lo && p.index < hi)
+				hits.push_back({p.range, static_cast<float>((p.index - double(i)) / binRays), p.atImageEdge});
 }
 
 std::vector<float> ScanFusion::visualRanges(
@@ -120,29 +121,35 @@ std::vector<float> ScanFusion::visualRanges(
 	const Eigen::Matrix3d laserToRobot = laser.sensorPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d laserOrigin(laser.sensorPose.x(), laser.sensorPose.y(), laser.sensorPose.z());
 	const Eigen::RowVector3d xAxis = laserToRobot.col(0).transpose(), yAxis = laserToRobot.col(1).transpose();
-	std::vector<PlanePoint> onPlane;
-	onPlane.reserve(points.size());
+	// Each point under the ray it rounds to (a bin gathers from the rays it spans).
+	std::vector<std::vector<PlanePoint>> onPlane(n);
 	for (const auto& p : points)
 	{
 		// Projected onto the laser's (horizontal) plane.
 		const Eigen::Vector3d d = p.robot - laserOrigin;
 		const double x = xAxis * d, y = yAxis * d;
-		onPlane.push_back({rayIndexOf(laser, std::atan2(y, x)), static_cast<float>(std::hypot(x, y)), atImageEdge(p.u)});
+		const double index = rayIndexOf(laser, std::atan2(y, x));
+		const long ray = std::lround(index);
+		if (ray < 0 || ray >= long(n)) continue;
+		onPlane[size_t(ray)].push_back({index, static_cast<float>(std::hypot(x, y)), atImageEdge(p.u)});
 	}
-	std::sort(onPlane.begin(), onPlane.end(), [](const PlanePoint& a, const PlanePoint& b) { return a.index < b.index; });
 
 	std::vector<float> out(n, std::numeric_limits<float>::infinity());
 	const size_t need = static_cast<size_t>(m_options.minPoints);
 	const float slack = static_cast<float>(m_options.centreSlack);
+	std::vector<Hit> hits, around;	// reused from ray to ray
 	for (size_t i = 0; i < n; i++)
 	{
-		auto hits = hitsAround(onPlane, i, binRays, 0.5);
+		hitsAround(onPlane, i, binRays, 0.5, hits);
 		if (hits.empty()) continue;
 		if (hits.size() < need)
 		{
 			// Too few of its own: with its neighbours' (neighbour_bins).
 			if (m_options.neighbourBins > 0)
-				out[i] = rangeWithNeighbours(hits, hitsAround(onPlane, i, binRays, m_options.neighbourBins + 0.5));
+			{
+				hitsAround(onPlane, i, binRays, m_options.neighbourBins + 0.5, around);
+				out[i] = rangeWithNeighbours(hits, around);
+			}
 			continue;
 		}
 		std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.range < b.range; });

@@ -150,11 +150,13 @@ class ScanFusion
 		float range;
 		bool atImageEdge;
 	};
-	/** The points, sorted by index, whose bearing lies within `halfWidths`
-	 * bin widths of ray i's (from -halfWidths inclusive to +halfWidths
-	 * exclusive, so that 1-degree bins of a 1-degree laser part as rounding
-	 * to the nearest ray does), with their offsets in bin widths. */
-	std::vector<Hit> hitsAround(const std::vector<PlanePoint>& sorted, size_t i, double binRays, double halfWidths) const;
+	/** Into `hits`: the points (in `byRay`, each under the ray it rounds
+	 * to) whose bearing lies within `halfWidths` bin widths of ray i's
+	 * (from -halfWidths inclusive to +halfWidths exclusive, so that 1-degree
+	 * bins of a 1-degree laser part as rounding to the nearest ray does),
+	 * with their offsets in bin widths. */
+	void hitsAround(const std::vector<std::vector<PlanePoint>>& byRay, size_t i, double binRays, double halfWidths,
+		std::vector<Hit>& hits) const;
 	/** The range of a bin's cluster [first, last) along the bin's own ray
 	 * (reorders the cluster). */
 	float rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector<Hit>::iterator last) const;
