@@ -21,11 +21,12 @@ using namespace lvf;
 
 namespace
 {
-metrics::FusionScore fuseWorld(uint32_t seed, fusion::CLaserStereoFusion::StageTimes& times, size_t& frames)
+metrics::FusionScore fuseWorld(uint32_t seed, fusion::CLaserStereoFusion::StageTimes& times, size_t& frames,
+	const simulation::CStereoLaserSimulator::TOptions& sensors = {}, const fusion::CLaserStereoFusion::TOptions& options = {})
 {
 	const auto world = simulation::generateRandomWorld(seed);
-	simulation::CStereoLaserSimulator sim(world, simulation::CStereoLaserSimulator::TOptions());
-	fusion::CLaserStereoFusion fusion;
+	simulation::CStereoLaserSimulator sim(world, sensors);
+	fusion::CLaserStereoFusion fusion(options);
 	metrics::FusionScore score;
 	for (size_t k = 0; k < sim.frameCount(); k++)
 	{
@@ -413,4 +414,32 @@ TEST(FusionPipeline, AnUpsideDownOrClockwiseLaserFusesTheSameRays)
 		for (size_t i = 0; i < n; i++)
 			EXPECT_NEAR(r.fused->getScanRange(n - 1 - i), expected.fused->getScanRange(i), 1e-4) << "ray " << i;
 	}
+}
+
+// The same test rooms seen by a 0.25-degree laser over 270 degrees (a
+// Hokuyo's): each bearing's 1-degree bin (ScanFusion's bin_width_deg) still
+// gathers the points a 1-degree bearing would. Measured (lvf-fuse on the
+// same rooms simulated so): recall 0.900, phantom rate 0.021; with bins as
+// narrow as the rays 0.726, 0.017 (the 1-degree laser: 0.908, 0.017).
+TEST(FusionPipeline, AQuarterDegreeLaserFindsWhatItMissesAsWell)
+{
+	simulation::CStereoLaserSimulator::TOptions sensors;
+	sensors.laser.resolutionDeg = 0.25;
+	sensors.laser.apertureDeg = 270;
+	auto run = [&](double binWidthDeg) {
+		fusion::CLaserStereoFusion::TOptions options;
+		options.fusion.binWidthDeg = binWidthDeg;
+		metrics::FusionScore total;
+		fusion::CLaserStereoFusion::StageTimes times;
+		size_t frames = 0;
+		for (uint32_t seed = 1; seed <= 6; seed++) total.add(fuseWorld(seed, times, frames, sensors, options));
+		std::cout << "bins of " << binWidthDeg << " deg: hidden " << total.hidden << ", recall " << total.recall()
+				  << ", phantom rate " << total.phantomRate() << " of " << total.inView << "\n";
+		return total;
+	};
+	const auto degree = run(1.0), rayWide = run(0.25);
+	ASSERT_GT(degree.hidden, 800u);
+	EXPECT_GE(degree.recall(), 0.88);
+	EXPECT_LE(degree.phantomRate(), 0.025);
+	EXPECT_GE(degree.recall(), rayWide.recall() + 0.1);
 }
