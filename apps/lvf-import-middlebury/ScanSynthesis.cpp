@@ -1,5 +1,7 @@
 #include "ScanSynthesis.h"
 
+#include <lvfusion/common/LaserRange.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,7 +30,7 @@ std::vector<float> nearestPerRay(
 
 long ScanBearings::rayOf(double b) const
 {
-	const long i = std::lround((b + 0.5 * aperture) / step());
+	const long i = std::lround(lvf::rayIndexOf(aperture, rays, b));
 	return i >= 0 && i < static_cast<long>(rays) ? i : -1;
 }
 

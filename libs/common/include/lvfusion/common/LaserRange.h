@@ -14,14 +14,21 @@ inline float laserRangeOrMax(const mrpt::obs::CObservation2DRangeScan& scan, siz
 	return scan.getScanRangeValidity(i) ? scan.getScanRange(i) : scan.maxRange;
 }
 
+/** Where a bearing [rad, counter-clockwise] falls among `rays` rays spread
+ * right to left over `aperture` [rad] centred on 0, as a fractional index
+ * (0: the rightmost ray); rounded, the nearest ray, which may lie outside. */
+inline double rayIndexOf(double aperture, size_t rays, double bearing)
+{
+	const double step = rays > 1 ? aperture / static_cast<double>(rays - 1) : 1.0;
+	return (bearing + 0.5 * aperture) / step;
+}
+
 /** Where a bearing in the sensor's frame [rad] falls among the scan's rays,
  * as a fractional index (0: the first ray, size - 1: the last, whichever way
  * the scan turns); rounded, the nearest ray, which may lie outside the scan. */
 inline double rayIndexOf(const mrpt::obs::CObservation2DRangeScan& scan, double bearing)
 {
-	const size_t n = scan.getScanSize();
-	const double step = n > 1 ? scan.aperture / static_cast<double>(n - 1) : 1.0;
-	return ((scan.rightToLeft ? bearing : -bearing) + 0.5 * scan.aperture) / step;
+	return rayIndexOf(scan.aperture, scan.getScanSize(), scan.rightToLeft ? bearing : -bearing);
 }
 
 }  // namespace lvf
