@@ -84,6 +84,8 @@ float ScanFusion::rangeWithNeighbours(const std::vector<Hit>& own, const std::ve
 			if (h.range < start || h.range - start > m_options.clusterTolerance) continue;
 			count++;
 			below |= h.offset < -0.5f, above |= h.offset >= 0.5f;
+			// Supported by another point within range_support behind it; the
+			// first point at the start's own range is the start itself.
 			if (h.range - start <= m_options.rangeSupport) supported |= h.range != start || ++atStart > 1;
 		}
 		if (count >= size_t(m_options.minPoints) && supported && below && above) return start;
