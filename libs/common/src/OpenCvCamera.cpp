@@ -35,11 +35,11 @@ bool hasLensDistortion(const mrpt::img::TCamera& camera) { return !openCvDistort
 
 namespace
 {
-/** The image's border, a pixel every 1/64 of each side, in order round it. */
-std::vector<cv::Point2d> imageBorder(const mrpt::img::TCamera& camera)
+/** The image's border, a pixel every 1/steps of each side, in order round
+ * it (steps 1: its four corners). */
+std::vector<cv::Point2d> imageBorder(const mrpt::img::TCamera& camera, int steps)
 {
 	const double lastU = camera.ncols - 1.0, lastV = camera.nrows - 1.0;
-	const int steps = 64;
 	std::vector<cv::Point2d> border;
 	for (int k = 0; k < steps; k++) border.emplace_back(lastU * k / steps, 0);
 	for (int k = 0; k < steps; k++) border.emplace_back(lastU, lastV * k / steps);
@@ -61,18 +61,26 @@ std::vector<std::optional<cv::Point2d>> pixelsInView(
 	const std::vector<double> D = fisheye ? std::vector<double>() : openCvDistortion(camera);
 	const cv::TermCriteria exact(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-12);
 
+	// Without a lens the border stays straight: its corners are the whole
+	// polygon (a point costs a test per side of it).
+	const int steps = fisheye || !D.empty() ? 64 : 1;
 	std::vector<cv::Point2d> ideal;
-	if (fisheye) cv::fisheye::undistortPoints(imageBorder(camera), ideal, K, fisheyeD, cv::noArray(), cv::noArray(), exact);
-	else cv::undistortPoints(imageBorder(camera), ideal, K, D, cv::noArray(), cv::noArray(), exact);
+	if (fisheye) cv::fisheye::undistortPoints(imageBorder(camera, steps), ideal, K, fisheyeD, cv::noArray(), cv::noArray(), exact);
+	else cv::undistortPoints(imageBorder(camera, steps), ideal, K, D, cv::noArray(), cv::noArray(), exact);
 	const std::vector<cv::Point2f> view(ideal.begin(), ideal.end());
+	// Its bounding box turns away most points outside before the polygon test.
+	float minX = view[0].x, maxX = minX, minY = view[0].y, maxY = minY;
+	for (const auto& q : view)
+		minX = std::min(minX, q.x), maxX = std::max(maxX, q.x), minY = std::min(minY, q.y), maxY = std::max(maxY, q.y);
 
 	std::vector<cv::Point3d> seen;
 	std::vector<size_t> seenIndex;
 	for (size_t k = 0; k < points.size(); k++)
 	{
 		const cv::Point3d& p = points[k];
-		if (p.z <= 0 || cv::pointPolygonTest(view, cv::Point2f(float(p.x / p.z), float(p.y / p.z)), false) < 0)
-			continue;
+		if (p.z <= 0) continue;
+		const cv::Point2f q(float(p.x / p.z), float(p.y / p.z));
+		if (q.x < minX || q.x > maxX || q.y < minY || q.y > maxY || cv::pointPolygonTest(view, q, false) < 0) continue;
 		seen.push_back(p);
 		seenIndex.push_back(k);
 	}
