@@ -1,7 +1,5 @@
 #include "ScanSynthesis.h"
 
-#include <lvfusion/common/LaserRange.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -13,6 +13,7 @@
 #include "VirtualRobotFrame.h"
 
 #include <lvfusion/common/HeightBand.h>
+#include <lvfusion/common/LaserRange.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <Eigen/Core>
@@ -27,7 +28,7 @@ struct ScanBearings
 
 	/** MRPT's convention (rightToLeft): ray i at -aperture/2 + i * step. */
 	double bearing(size_t i) const { return -0.5 * aperture + step() * static_cast<double>(i); }
-	double step() const { return aperture / static_cast<double>(rays - 1); }
+	double step() const { return lvf::rayStep(aperture, rays); }
 	/** The ray nearest `bearing` [rad], or -1 more than half a step outside
 	 * the aperture. */
 	long rayOf(double bearing) const;

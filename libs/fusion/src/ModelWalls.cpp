@@ -1,3 +1,4 @@
+#include <lvfusion/common/LaserRange.h>
 #include <lvfusion/fusion/ModelWalls.h>
 
 #include <algorithm>
@@ -29,7 +30,7 @@ std::vector<lvf::model::VerticalWall> modelWalls(
 		}
 	}
 	if (!facetStrayReturns || scan.getScanSize() < 2) return walls;
-	const double step = scan.aperture / double(scan.getScanSize() - 1);
+	const double step = rayStep(scan.aperture, scan.getScanSize());
 	for (size_t i = 0; i < scan.getScanSize(); i++)
 	{
 		if (covered[i] || !scan.getScanRangeValidity(i)) continue;

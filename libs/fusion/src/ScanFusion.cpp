@@ -115,7 +115,7 @@ std::vector<float> ScanFusion::visualRanges(
 		return searched && std::isfinite(u) && (u - searched->first < searched->step || searched->last - u < searched->step);
 	};
 	const size_t n = laser.getScanSize();
-	const double rayStep = n > 1 ? laser.aperture / static_cast<double>(n - 1) : 1.0;
+	const double rayStep = lvf::rayStep(laser.aperture, n);
 	// A bin's width in rays: at least one.
 	const double binRays = std::max(1.0, mrpt::DEG2RAD(m_options.binWidthDeg) / rayStep);
 	// Into the laser's frame: R^T (p - t), its rows taken once (MRPT's

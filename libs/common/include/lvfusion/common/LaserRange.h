@@ -14,13 +14,20 @@ inline float laserRangeOrMax(const mrpt::obs::CObservation2DRangeScan& scan, siz
 	return scan.getScanRangeValidity(i) ? scan.getScanRange(i) : scan.maxRange;
 }
 
+/** The angle between neighbouring rays of `rays` rays over `aperture`
+ * [rad], MRPT's convention (the first and last at the aperture's ends); 1
+ * for a single ray. */
+inline double rayStep(double aperture, size_t rays)
+{
+	return rays > 1 ? aperture / static_cast<double>(rays - 1) : 1.0;
+}
+
 /** Where a bearing [rad, counter-clockwise] falls among `rays` rays spread
  * right to left over `aperture` [rad] centred on 0, as a fractional index
  * (0: the rightmost ray); rounded, the nearest ray, which may lie outside. */
 inline double rayIndexOf(double aperture, size_t rays, double bearing)
 {
-	const double step = rays > 1 ? aperture / static_cast<double>(rays - 1) : 1.0;
-	return (bearing + 0.5 * aperture) / step;
+	return (bearing + 0.5 * aperture) / rayStep(aperture, rays);
 }
 
 /** Where a bearing in the sensor's frame [rad] falls among the scan's rays,
