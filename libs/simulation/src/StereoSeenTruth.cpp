@@ -1,7 +1,6 @@
 #include <lvfusion/common/LaserRange.h>
 #include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/simulation/StereoSeenTruth.h>
-#include <opencv2/calib3d.hpp>
 
 #include <cmath>
 #include <limits>
@@ -51,13 +50,13 @@ std::vector<float> StereoSeenTruth::scan(
 		}
 	std::vector<float> ranges(scanGeometry.getScanSize(), std::numeric_limits<float>::infinity());
 	if (inRight.empty() || ranges.size() < 2) return ranges;
-	std::vector<cv::Point2d> pixels;
-	// The right camera's model as the renderer reads it (OpenCvCamera.h).
-	cv::projectPoints(inRight, cv::Vec3d::all(0), cv::Vec3d::all(0), lvf::common::openCvCameraMatrix(right),
-		lvf::common::openCvDistortion(right), pixels);
+	// Through the right camera's lens, every coefficient, and only what lies
+	// inside its view (OpenCvCamera.h: a lens polynomial past its largest
+	// radius would fold points from beside the view back into the image).
+	const auto pixels = lvf::common::pixelsInView(inRight, right);
 	for (size_t k = 0; k < inRight.size(); k++)
 	{
-		if (!inside(pixels[k].x, pixels[k].y, right, m_margin)) continue;
+		if (!pixels[k] || !inside(pixels[k]->x, pixels[k]->y, right, m_margin)) continue;
 		const auto& p = inLaser[k];
 		const long ray = std::lround(rayIndexOf(scanGeometry, std::atan2(p.y, p.x)));
 		if (ray < 0 || ray >= static_cast<long>(ranges.size())) continue;
