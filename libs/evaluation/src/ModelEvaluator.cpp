@@ -39,11 +39,12 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 
 ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Mat1b& left, const cv::Mat1b& right,
-	const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const
+	const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
+	std::optional<double> sensorNoiseStd) const
 {
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = estimateNoiseStd(left);
+	out.noiseStd = sensorNoiseStd ? *sensorNoiseStd : estimateNoiseStd(left);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
@@ -87,14 +88,14 @@ ModelEvaluation ModelEvaluator::evaluate(
 
 ModelEvaluation ModelEvaluator::evaluateGrid(
 	const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
-	const RectifiedGeometry& geometry, int first, int stride) const
+	const RectifiedGeometry& geometry, int first, int stride, std::optional<double> sensorNoiseStd) const
 {
 	const int half = m_options.windowSize / 2;
 	if (first < half || stride < 1)
 		throw std::invalid_argument("evaluateGrid: the grid must start at window_size / 2 or later");
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = estimateNoiseStd(left);
+	out.noiseStd = sensorNoiseStd ? *sensorNoiseStd : estimateNoiseStd(left);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	cv::Mat1f warped;

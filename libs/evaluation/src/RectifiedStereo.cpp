@@ -1,5 +1,6 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/OpenCvCamera.h>
+#include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/RectifiedStereo.h>
 #include <Eigen/Dense>
 #include <opencv2/calib3d.hpp>
@@ -173,6 +174,12 @@ void RectifiedStereo::rectify(
 	}
 	cv::remap(greyLeft, left, m_mapLeftX, m_mapLeftY, cv::INTER_LINEAR);
 	cv::remap(greyRight, right, m_mapRightX, m_mapRightY, cv::INTER_LINEAR);
+}
+
+std::optional<double> RectifiedStereo::sensorNoiseStd(const mrpt::obs::CObservationStereoImages& obs) const
+{
+	if (!remaps()) return std::nullopt;
+	return estimateNoiseStd(toGrey(obs.imageLeft));
 }
 
 }  // namespace lvf::evaluation

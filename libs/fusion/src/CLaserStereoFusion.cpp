@@ -168,9 +168,12 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 			modelWalls(scan, r.segments, m_options.facetStrayReturns, m_options.joinSegmentEnds), m_options.floorHeight);
 		return lvf::evaluation::renderModelDisparity(r.model, r.geometry);
 	});
-	timed(r.times.rectify, [&] {
+	// The cameras' noise as taken, where rectification resamples it
+	// (RectifiedStereo::sensorNoiseStd): the evaluation's and the search's
+	// texture gates are set from it.
+	const std::optional<double> sensorNoise = timed(r.times.rectify, [&] {
 		m_stereo.rectify(stereo, r.left, r.right);
-		return 0;
+		return m_stereo.sensorNoiseStd(stereo);
 	});
 	const lvf::evaluation::ModelEvaluator evaluator(m_options.evaluation);
 	// The search's grid starts half a window from the border.
@@ -178,8 +181,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	const int gridStride = m_options.evaluateSearchGridOnly ? m_options.depth.pixelStride : 1;
 	r.evaluation = timed(r.times.evaluate, [&] {
 		return m_options.evaluateSearchGridOnly
-			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride)
-			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry);
+			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride, sensorNoise)
+			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry, sensorNoise);
 	});
 
 	// Every judged pixel: the whole image, or the search grid.

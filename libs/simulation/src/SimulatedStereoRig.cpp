@@ -71,7 +71,7 @@ void SimulatedStereoRig::TOptions::saveToConfigFile(
 	writeOption(c, s, "right_gain", rightGain, "right camera intensity gain");
 	writeOption(c, s, "left_noise_std", leftNoiseStd, "left image Gaussian noise [grey levels]");
 	writeOption(c, s, "right_noise_std", rightNoiseStd, "right image Gaussian noise [grey levels]");
-	writeOption(c, s, "supersampling", supersampling, "samples per pixel per axis, odd (anti-aliasing)");
+	writeOption(c, s, "supersampling", supersampling, "samples per pixel per axis, odd (anti-aliasing; 3 or more for a rig that needs rectifying: its resampled images alias unlike a parallel pair's, README)");
 }
 
 mrpt::img::TStereoCamera SimulatedStereoRig::TOptions::stereoCamera() const

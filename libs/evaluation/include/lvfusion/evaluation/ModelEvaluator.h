@@ -18,6 +18,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <array>
+#include <optional>
 
 namespace lvf::evaluation
 {
@@ -91,10 +92,15 @@ class ModelEvaluator
 	explicit ModelEvaluator(const TOptions& options) : m_options(options) {}
 
 	/** @param left, right rectified grey images
-	 *  @param modelDisparity from renderModelDisparity() */
+	 *  @param modelDisparity from renderModelDisparity()
+	 *  @param sensorNoiseStd the cameras' noise [grey levels], where it was
+	 *    estimated on the images as taken (estimateNoiseStd() before
+	 *    rectification, which hides it: RectifiedStereo::sensorNoiseStd());
+	 *    none: estimated on `left` */
 	ModelEvaluation evaluate(
 		const cv::Mat1b& left, const cv::Mat1b& right,
-		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry) const;
+		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
+		std::optional<double> sensorNoiseStd = std::nullopt) const;
 
 	/** The same judgement, only at pixels (first + i stride, first + j
 	 * stride) whose window lies inside the image (first >= windowSize / 2
@@ -102,7 +108,8 @@ class ModelEvaluator
 	 * statistics and NCC are 0 there. */
 	ModelEvaluation evaluateGrid(
 		const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
-		const RectifiedGeometry& geometry, int first, int stride) const;
+		const RectifiedGeometry& geometry, int first, int stride,
+		std::optional<double> sensorNoiseStd = std::nullopt) const;
 
 	const TOptions& options() const { return m_options; }
 
