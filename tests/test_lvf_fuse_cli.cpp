@@ -81,6 +81,12 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	ASSERT_EQ(info.status, 0) << info.err;
 	const auto counts = labelCounts(info.out);
 	for (const char* label : {"LASER", "STEREO", "FUSED", "EVAL"}) EXPECT_EQ(counts.at(label), 1) << label;
+	// The fused scans alone, for MRPT's tools that take every scan of a log
+	// (README: icp-slam), as rawlog-edit keeps them by label.
+	const auto kept = run(LVF_RAWLOG_EDIT, "--keep-label FUSED -i out/two_cubes_fused.rawlog -o fused_only.rawlog");
+	ASSERT_EQ(kept.status, 0) << kept.err;
+	EXPECT_EQ(labelCounts(run(LVF_RAWLOG_EDIT, "--info -i fused_only.rawlog").out),
+		(std::map<std::string, int>{{"FUSED", 1}}));
 	// Header + one frame, with the truth columns filled in.
 	const std::string csv = slurp(m_dir / "out/two_cubes_frames.csv");
 	EXPECT_EQ(countLines(csv), 2u);
