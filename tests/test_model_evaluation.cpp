@@ -175,6 +175,52 @@ TEST(RectifiedStereo, DistortedMisalignedRigPutsKnownPointsOnOneRowAtTheirDispar
 	expectCornersOnOneRowAtTheirDisparity(distortedMisalignedRigFrame({-0.2, 0.05, 0.001, -0.001, 0}));
 }
 
+// With alpha 1 the rectified pair keeps every pixel the cameras imaged, and
+// corners no camera saw are black: RectificationEffects marks them, and the
+// evaluation judges no window that touches one (a black corner's edge is
+// texture). With alpha 0 nothing is outside.
+TEST(RectifiedStereo, BlackCornersAreMarkedAndLeftUnjudged)
+{
+	const auto f = distortedMisalignedRigFrame({-0.2, 0.05, 0.001, -0.001, 0});
+	RectifiedStereo cropped(0.0), whole(1.0);
+	cropped.prepare(*f.stereo, "frame 0");
+	whole.prepare(*f.stereo, "frame 0");
+	cv::Mat1b left, right;
+	whole.rectify(*f.stereo, left, right);
+	const auto effects = whole.effects(*f.stereo);
+	ASSERT_FALSE(effects.leftNotImaged.empty());
+	ASSERT_FALSE(effects.rightNotImaged.empty());
+	const int area = left.rows * left.cols;
+	EXPECT_GT(cv::countNonZero(effects.leftNotImaged), area / 100) << "alpha 1 shows the lens's black corners";
+	// Marked pixels are black but for the corners' edges, where the
+	// interpolation reads inside and outside (the wall's texture is never 0).
+	for (const auto& [image, marks] : {std::pair{left, effects.leftNotImaged}, {right, effects.rightNotImaged}})
+		EXPECT_LT(cv::countNonZero(marks & (image > 0)), cv::countNonZero(marks) / 20);
+	const auto croppedEffects = cropped.effects(*f.stereo);
+	EXPECT_LT(croppedEffects.leftNotImaged.empty() ? 0 : cv::countNonZero(croppedEffects.leftNotImaged), area / 1000);
+
+	// The wall 2.5 m ahead as the model; every judged window clear of the
+	// marks, in the left image and where the model takes it in the right.
+	const auto& g = whole.geometry();
+	const cv::Mat1f modelDisparity(left.size(), float(g.fB() / 2.5));
+	const int window = ModelEvaluator::TOptions().windowSize, half = window / 2;
+	const auto eval = ModelEvaluator().evaluateGrid(left, right, modelDisparity, g, half, 3, effects);
+	cv::Mat1b nearLeftMark;
+	cv::dilate(effects.leftNotImaged, nearLeftMark, cv::Mat::ones(window, window, CV_8U));
+	size_t judged = 0, touching = 0;
+	for (int v = 0; v < left.rows; v++)
+		for (int u = 0; u < left.cols; u++)
+		{
+			const auto s = static_cast<PixelState>(eval.state(v, u));
+			if (s != PixelState::Consistent && s != PixelState::Inconsistent && s != PixelState::Unmodelled) continue;
+			judged++;
+			touching += nearLeftMark(v, u) > 0;
+		}
+	EXPECT_GT(judged, 1000u);
+	EXPECT_EQ(touching, 0u);
+	EXPECT_GT(eval.count(PixelState::Unverifiable), 100u);
+}
+
 TEST(RectifiedStereo, RationalDistortionModelIsUndoneWithAllEightCoefficients)
 {
 	// plumb_bob with k4-k6 (OpenCV's rational model): a 1 + 0.1 r^2 + 0.02

@@ -7,6 +7,7 @@
 #include <lvfusion/evaluation/ModelWarp.h>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <numeric>
 #include <stdexcept>
 
@@ -37,14 +38,45 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 	writeOption(c, s, "min_texture_std", minTextureStd, "or below this, whatever the noise [grey levels]");
 }
 
+namespace
+{
+/** Adds to `unverifiable` the pixels rectification filled from outside
+ * the left image, and those whose model-warped right value reads a pixel
+ * filled from outside the right one (either of the two columns around
+ * where the model takes it): a black corner's edge is texture no camera
+ * saw. */
+void markNotImaged(const RectificationEffects& rectification, const cv::Mat1f& modelDisparity,
+	const RectifiedGeometry& geometry, cv::Mat1b& unverifiable)
+{
+	if (!rectification.leftNotImaged.empty()) unverifiable.setTo(255, rectification.leftNotImaged);
+	const cv::Mat1b& rightMarks = rectification.rightNotImaged;
+	if (rightMarks.empty()) return;
+	const int lastColumn = rightMarks.cols - 1;
+	for (int v = 0; v < unverifiable.rows; v++)
+	{
+		const float* d = modelDisparity[v];
+		const uint8_t* marks = rightMarks[v];
+		uint8_t* out = unverifiable[v];
+		for (int u = 0; u < unverifiable.cols; u++)
+		{
+			if (d[u] <= 0) continue;  // no model: unverifiable already
+			const float at = float(u + geometry.cxOffset) - d[u];
+			if (at < 0 || at > float(lastColumn)) continue;  // off the image: likewise
+			const int column = static_cast<int>(at);
+			if (marks[column] | marks[std::min(column + 1, lastColumn)]) out[u] = 255;
+		}
+	}
+}
+}  // namespace
+
 ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Mat1b& left, const cv::Mat1b& right,
 	const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	std::optional<double> sensorNoiseStd) const
+	const RectificationEffects& rectification) const
 {
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = sensorNoiseStd ? *sensorNoiseStd : estimateNoiseStd(left);
+	out.noiseStd = rectification.sensorNoiseStd ? *rectification.sensorNoiseStd : estimateNoiseStd(left);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
@@ -52,6 +84,7 @@ ModelEvaluation ModelEvaluator::evaluate(
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
 	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
+	markNotImaged(rectification, modelDisparity, geometry, unverifiable);
 	// A window touching an unverifiable pixel mixes in meaningless values.
 	cv::dilate(unverifiable, unverifiable, cv::Mat::ones(window, CV_8U));
 
@@ -88,19 +121,20 @@ ModelEvaluation ModelEvaluator::evaluate(
 
 ModelEvaluation ModelEvaluator::evaluateGrid(
 	const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
-	const RectifiedGeometry& geometry, int first, int stride, std::optional<double> sensorNoiseStd) const
+	const RectifiedGeometry& geometry, int first, int stride, const RectificationEffects& rectification) const
 {
 	const int half = m_options.windowSize / 2;
 	if (first < half || stride < 1)
 		throw std::invalid_argument("evaluateGrid: the grid must start at window_size / 2 or later");
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = sensorNoiseStd ? *sensorNoiseStd : estimateNoiseStd(left);
+	out.noiseStd = rectification.sensorNoiseStd ? *rectification.sensorNoiseStd : estimateNoiseStd(left);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
 	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
+	markNotImaged(rectification, modelDisparity, geometry, unverifiable);
 
 	out.ncc = cv::Mat1f::zeros(size);
 	out.leftMean = cv::Mat1f::zeros(size);

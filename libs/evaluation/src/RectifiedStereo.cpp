@@ -114,6 +114,7 @@ void RectifiedStereo::prepare(
 	if (alreadyRectified)
 	{
 		m_mapLeftX = m_mapLeftY = m_mapRightX = m_mapRightY = cv::Mat();
+		m_leftNotImaged = m_rightNotImaged = cv::Mat1b();
 		m_geometry.f = L.fx();
 		m_geometry.cx = L.cx();
 		m_geometry.cy = L.cy();
@@ -136,15 +137,25 @@ void RectifiedStereo::prepare(
 	const cv::Matx33d KL = lvf::common::openCvCameraMatrix(L), KR = lvf::common::openCvCameraMatrix(R);
 	const std::vector<double> DL = lvf::common::openCvDistortion(L), DR = lvf::common::openCvDistortion(R);
 	cv::Mat R1, R2, P1, P2, Q;
-	// Zero disparity at infinity (equal cx) and alpha 0: only valid pixels.
+	// Zero disparity at infinity (equal cx).
 	cv::stereoRectify(
-		KL, DL, KR, DR, m_geometry.size, Rlr, Tlr, R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, 0);
+		KL, DL, KR, DR, m_geometry.size, Rlr, Tlr, R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, m_alpha);
 	cv::initUndistortRectifyMap(
 		KL, DL, R1, P1, m_geometry.size, CV_16SC2,
 		m_mapLeftX, m_mapLeftY);
 	cv::initUndistortRectifyMap(
 		KR, DR, R2, P2, m_geometry.size, CV_16SC2,
 		m_mapRightX, m_mapRightY);
+	// Where the maps reach outside the images: remap an all-white image.
+	const cv::Mat1b white(m_geometry.size, uint8_t(255));
+	auto notImaged = [&](const cv::Mat& mapX, const cv::Mat& mapY) {
+		cv::Mat1b imaged;
+		cv::remap(white, imaged, mapX, mapY, cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+		const cv::Mat1b outside = imaged < 255;
+		return cv::countNonZero(outside) ? outside : cv::Mat1b();
+	};
+	m_leftNotImaged = notImaged(m_mapLeftX, m_mapLeftY);
+	m_rightNotImaged = notImaged(m_mapRightX, m_mapRightY);
 	m_geometry.f = P1.at<double>(0, 0);
 	m_geometry.cx = P1.at<double>(0, 2);
 	m_geometry.cy = P1.at<double>(1, 2);
@@ -176,10 +187,10 @@ void RectifiedStereo::rectify(
 	cv::remap(greyRight, right, m_mapRightX, m_mapRightY, cv::INTER_LINEAR);
 }
 
-std::optional<double> RectifiedStereo::sensorNoiseStd(const mrpt::obs::CObservationStereoImages& obs) const
+RectificationEffects RectifiedStereo::effects(const mrpt::obs::CObservationStereoImages& obs) const
 {
-	if (!remaps()) return std::nullopt;
-	return estimateNoiseStd(toGrey(obs.imageLeft));
+	if (!remaps()) return {};
+	return {estimateNoiseStd(toGrey(obs.imageLeft)), m_leftNotImaged, m_rightNotImaged};
 }
 
 }  // namespace lvf::evaluation

@@ -50,6 +50,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	maxInconsistentFraction = ini.real("max_inconsistent_fraction", maxInconsistentFraction, 0, 1);
 	calibrationNcc = ini.real("calibration_ncc", calibrationNcc, -1, 1);
 	evaluateSearchGridOnly = ini.flag("evaluate_search_grid_only", evaluateSearchGridOnly);
+	rectifyAlpha = ini.real("rectify_alpha", rectifyAlpha, 0, 1);
 	ini.rejectUnknownKeys();
 	lines.loadFromConfigFile(source, kLines);
 	evaluation.loadFromConfigFile(source, kEvaluation);
@@ -71,6 +72,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "max_inconsistent_fraction", maxInconsistentFraction, "more of all judged pixels inconsistent than this share: calibration suspect, laser only [0..1]");
 	writeOption(c, s, "calibration_ncc", calibrationNcc, "for these two checks a judged pixel agrees with the model at this NCC or more (not the evaluation's ncc_threshold) [-1..1]");
 	writeOption(c, s, "evaluate_search_grid_only", evaluateSearchGridOnly, "evaluate the model only at the pixels the depth search reads (its pixel_stride grid): same result there, faster");
+	writeOption(c, s, "rectify_alpha", rectifyAlpha, "where the rig needs rectifying, how much of the views the rectified pair keeps (OpenCV stereoRectify's alpha): 0 only what both cameras imaged (the edges cropped), 1 all, with black corners left unjudged [0..1]");
 	lines.saveToConfigFile(c, kLines);
 	evaluation.saveToConfigFile(c, kEvaluation);
 	depth.saveToConfigFile(c, kDepth);
@@ -82,7 +84,10 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 CLaserStereoFusion::CLaserStereoFusion() : CLaserStereoFusion(TOptions()) {}
 
 CLaserStereoFusion::CLaserStereoFusion(const TOptions& options)
-	: mrpt::system::COutputLogger("CLaserStereoFusion"), m_options(options), m_memory(options.memory)
+	: mrpt::system::COutputLogger("CLaserStereoFusion"),
+	  m_options(options),
+	  m_stereo(options.rectifyAlpha),
+	  m_memory(options.memory)
 {
 }
 
@@ -168,12 +173,11 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 			modelWalls(scan, r.segments, m_options.facetStrayReturns, m_options.joinSegmentEnds), m_options.floorHeight);
 		return lvf::evaluation::renderModelDisparity(r.model, r.geometry);
 	});
-	// The cameras' noise as taken, where rectification resamples it
-	// (RectifiedStereo::sensorNoiseStd): the evaluation's and the search's
-	// texture gates are set from it.
-	const std::optional<double> sensorNoise = timed(r.times.rectify, [&] {
+	// Where rectification resampled the pair, the evaluation takes the
+	// cameras' noise as taken and leaves out what they did not image.
+	const lvf::evaluation::RectificationEffects rectification = timed(r.times.rectify, [&] {
 		m_stereo.rectify(stereo, r.left, r.right);
-		return m_stereo.sensorNoiseStd(stereo);
+		return m_stereo.effects(stereo);
 	});
 	const lvf::evaluation::ModelEvaluator evaluator(m_options.evaluation);
 	// The search's grid starts half a window from the border.
@@ -181,8 +185,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	const int gridStride = m_options.evaluateSearchGridOnly ? m_options.depth.pixelStride : 1;
 	r.evaluation = timed(r.times.evaluate, [&] {
 		return m_options.evaluateSearchGridOnly
-			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride, sensorNoise)
-			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry, sensorNoise);
+			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride, rectification)
+			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry, rectification);
 	});
 
 	// Every judged pixel: the whole image, or the search grid.

@@ -18,7 +18,6 @@
 #include <mrpt/config/CLoadableOptions.h>
 
 #include <array>
-#include <optional>
 
 namespace lvf::evaluation
 {
@@ -93,14 +92,15 @@ class ModelEvaluator
 
 	/** @param left, right rectified grey images
 	 *  @param modelDisparity from renderModelDisparity()
-	 *  @param sensorNoiseStd the cameras' noise [grey levels], where it was
-	 *    estimated on the images as taken (estimateNoiseStd() before
-	 *    rectification, which hides it: RectifiedStereo::sensorNoiseStd());
-	 *    none: estimated on `left` */
+	 *  @param rectification what rectifying the pair did to it
+	 *    (RectifiedStereo::effects()): the cameras' noise as taken, else
+	 *    estimated on `left`; pixels it filled from outside the images,
+	 *    whose windows, and those the model warps onto them, are not
+	 *    judged (Unverifiable) */
 	ModelEvaluation evaluate(
 		const cv::Mat1b& left, const cv::Mat1b& right,
 		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-		std::optional<double> sensorNoiseStd = std::nullopt) const;
+		const RectificationEffects& rectification = {}) const;
 
 	/** The same judgement, only at pixels (first + i stride, first + j
 	 * stride) whose window lies inside the image (first >= windowSize / 2
@@ -109,7 +109,7 @@ class ModelEvaluator
 	ModelEvaluation evaluateGrid(
 		const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
 		const RectifiedGeometry& geometry, int first, int stride,
-		std::optional<double> sensorNoiseStd = std::nullopt) const;
+		const RectificationEffects& rectification = {}) const;
 
 	const TOptions& options() const { return m_options; }
 

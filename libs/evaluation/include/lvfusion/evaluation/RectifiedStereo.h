@@ -49,9 +49,32 @@ struct RectifiedGeometry
 	Eigen::Vector3d cameraCentre() const { return {leftPose.x(), leftPose.y(), leftPose.z()}; }
 };
 
+/** What rectification did to a pair that the later stages must know, and
+ * the images themselves no longer show (all empty where the images are used
+ * as they are). */
+struct RectificationEffects
+{
+	/** The left camera's noise std [grey levels] on its image as taken
+	 * (ImageNoise.h): interpolation averages neighbouring pixels, so the
+	 * rectified image's noise is correlated and the estimator, a 3x3
+	 * high-pass, reads less than half of it (2.2 -> 0.9 grey levels on the
+	 * simulator's std-2 noise); texture gates set from that would let noise
+	 * pass for texture. */
+	std::optional<double> sensorNoiseStd;
+	/** 255 where a rectified pixel takes some of its value from outside the
+	 * camera's image (black there), with `alpha` above 0; else empty. */
+	cv::Mat1b leftNotImaged, rightNotImaged;
+};
+
 class RectifiedStereo
 {
    public:
+	/** `alpha`: OpenCV stereoRectify's free scaling where a rig needs
+	 * rectifying — 0 keeps only pixels both cameras imaged, cropping the
+	 * view's edges (a lens's most), 1 keeps every imaged pixel, with black
+	 * corners (RectificationEffects). */
+	explicit RectifiedStereo(double alpha = 0) : m_alpha(alpha) {}
+
 	/** Checks and prepares a calibration (both images present, sizes equal
 	 * to the calibration, positive focal lengths, a usable baseline).
 	 * Throws lvf::common::InputError naming `record` otherwise. Prepared maps
@@ -64,24 +87,21 @@ class RectifiedStereo
 		const mrpt::obs::CObservationStereoImages& obs, cv::Mat1b& left,
 		cv::Mat1b& right) const;
 
-	/** The left camera's noise std [grey levels] (ImageNoise.h) where
-	 * rectify() resamples the images, estimated on the image as taken:
-	 * interpolation averages neighbouring pixels, so the rectified image's
-	 * noise is correlated and the estimator, a 3x3 high-pass, reads less
-	 * than half of it (2.2 -> 0.9 grey levels on the simulator's std-2
-	 * noise), and texture gates set from that let noise pass for texture.
-	 * None where the images are used as they are (estimate on those). */
-	std::optional<double> sensorNoiseStd(const mrpt::obs::CObservationStereoImages& obs) const;
+	/** What rectify() did to this pair (all empty where the images are
+	 * used as they are). */
+	RectificationEffects effects(const mrpt::obs::CObservationStereoImages& obs) const;
 
 	const RectifiedGeometry& geometry() const { return m_geometry; }
 	bool remaps() const { return !m_mapLeftX.empty(); }
 
    private:
+	double m_alpha = 0;
 	mrpt::img::TStereoCamera m_calibration;
 	mrpt::poses::CPose3D m_cameraPose;
 	bool m_prepared = false;
 	RectifiedGeometry m_geometry;
 	cv::Mat m_mapLeftX, m_mapLeftY, m_mapRightX, m_mapRightY;
+	cv::Mat1b m_leftNotImaged, m_rightNotImaged;
 };
 
 /** Grey 8-bit view (or conversion) of an MRPT image. */

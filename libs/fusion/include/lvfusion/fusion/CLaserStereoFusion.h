@@ -70,6 +70,11 @@ class CLaserStereoFusion : public mrpt::rtti::CObject, public mrpt::system::COut
 		 * cheaper; the evaluation overlay then shows only those pixels, and
 		 * the fraction above is taken over them. */
 		bool evaluateSearchGridOnly = true;
+		/** Where the rig needs rectifying, how much of the cameras' views the
+		 * rectified pair keeps (OpenCV stereoRectify's alpha): 0 only what
+		 * both imaged, cropping the view's edges (a lens's most), 1 all of
+		 * it, with black corners the evaluation leaves out (README). */
+		double rectifyAlpha = 0.25;
 		lvf::lines::ScanLineExtractor::TOptions lines;
 		lvf::evaluation::ModelEvaluator::TOptions evaluation;
 		lvf::depth::FocusedEpipolarSearch::TOptions depth;
