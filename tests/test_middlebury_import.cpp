@@ -683,6 +683,8 @@ TEST_F(MiddleburyImport, ARigThatNeedsRectifyingFusesTheRealScenesAsWell)
 		ASSERT_EQ(asIs.status, 0) << asIs.err;
 		ASSERT_EQ(rectified.status, 0) << rectified.err;
 		EXPECT_EQ(rectified.err, "") << "no warning, no fall-back to the laser";
+		EXPECT_NE(rectified.out.find("the stereo pairs rectified ("), std::string::npos) << rectified.out;
+		EXPECT_EQ(asIs.out.find("rectified"), std::string::npos) << "Middlebury's pairs come rectified\n" << asIs.out;
 
 		const auto before = readCsv(m_dir / "a/as_is_bearings.csv"), after = readCsv(m_dir / "b/turned_bearings.csv");
 		ASSERT_EQ(before.size(), after.size());

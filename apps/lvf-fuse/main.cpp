@@ -156,16 +156,19 @@ struct Tally
 	lvf::metrics::FusionScore score;  //!< over the frames a truth scan scored
 	size_t badFrames = 0, laserAlone = 0, scored = 0;
 	double fusionMs = 0;  //!< the fusion's own time, summed over the frames
+	/** The rectified geometry, where a frame's pair had to be rectified. */
+	std::optional<lvf::evaluation::RectifiedGeometry> rectified;
 };
 
 void printSummary(
 	const Arguments& a, const lvf::apps::RawlogFrames& in, const lvf::apps::FrameStream& stream, const Tally& t,
-	const lvf::apps::TruthFiles& truth, double seconds, bool remembers, const std::string& wrote)
+	const lvf::apps::TruthFiles& truth, double seconds, const CLaserStereoFusion::TOptions& options,
+	const std::string& wrote)
 {
 	const std::string noOdometry = in.hasOdometry
 		? ""
 		: std::string("; no odometry: grids assume the robot stood still") +
-			(remembers ? ", and no frame remembers the points of earlier ones" : "");
+			(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
 	std::cout << mrpt::format(
 		"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
 		"%zu bad frames, %zu frames on the laser alone) in %.2f s, %.0f MB of memory at most "
@@ -174,6 +177,11 @@ void printSummary(
 		kApp.c_str(), a.input.c_str(), in.scans, in.stereoPairs, in.frames.size(), in.unpairedScans, t.badFrames,
 		t.laserAlone, seconds, peakMemoryMB(), stream.entriesHeldAtMost(), in.entries,
 		t.fusionMs / double(in.frames.size()), a.threads.c_str(), noOdometry.c_str());
+	if (t.rectified)
+		std::cout << mrpt::format(
+			"  the stereo pairs rectified (a lens, or cameras not parallel; OpenCV's stereoRectify, "
+			"rectify_alpha %.2f): f %.1f px, baseline %.3f m\n",
+			options.rectifyAlpha, t.rectified->f, t.rectified->baseline);
 	const auto& s = t.score;
 	if (t.scored)
 		std::cout << mrpt::format(
@@ -253,6 +261,7 @@ int run(int argc, char** argv)
 		for (const auto& w : r.warnings) std::cerr << kApp << ": warning: " << w << std::endl;
 		tally.laserAlone += r.fellBackToLaser;	// bad frames, a suspect calibration, no valid range
 		tally.fusionMs += r.times.total();
+		if (r.rectified) tally.rectified = r.geometry;
 
 		const auto frameTruth = lvf::apps::scoreAgainstTruth(truth, f, r, options);
 		if (frameTruth) tally.score.add(frameTruth->score), tally.scored++;
@@ -274,7 +283,7 @@ int run(int argc, char** argv)
 	if (outputFile) outputFile->commit();
 
 	if (!a.quiet)
-		printSummary(a, in, stream, tally, truth, timer.Tac(), options.memory.maxTravel > 0,
+		printSummary(a, in, stream, tally, truth, timer.Tac(), options,
 			(outputFile ? a.output : files.finalPath(name + "_fused.rawlog")) + ", " + name +
 				"_{laser,fused}.gridmap.gz, " + name + "_grids.png, " + name +
 				(a.points ? "_{frames,bearings,points}.csv in " : "_{frames,bearings}.csv in ") +

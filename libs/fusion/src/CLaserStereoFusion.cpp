@@ -164,6 +164,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	r.warnings = warnings;
 	m_stereo.prepare(stereo, record);
 	r.geometry = m_stereo.geometry();
+	r.rectified = m_stereo.remaps();
 
 	r.segments = timed(r.times.lines, [&] {
 		return lvf::lines::ScanLineExtractor(m_options.lines).extract(scan);
@@ -208,6 +209,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 		fallback.segments = std::move(r.segments);
 		fallback.model = std::move(r.model);
 		fallback.geometry = r.geometry;
+		fallback.rectified = r.rectified;
 		fallback.left = r.left;
 		fallback.right = r.right;
 		fallback.evaluation = std::move(r.evaluation);

@@ -101,6 +101,9 @@ class CLaserStereoFusion : public mrpt::rtti::CObject, public mrpt::system::COut
 		std::vector<lvf::lines::LineSegment> segments;
 		lvf::model::PlanarSceneModel model;
 		lvf::evaluation::RectifiedGeometry geometry;
+		/** The pair was resampled into that geometry (a lens, or cameras
+		 * not parallel); false: used as it came. */
+		bool rectified = false;
 		cv::Mat1b left, right;	//!< rectified grey images
 		lvf::evaluation::ModelEvaluation evaluation;
 		lvf::depth::FocusedEpipolarSearch::Result search;  //!< its points include the grown ones
