@@ -62,7 +62,8 @@ struct RectificationEffects
 	 * pass for texture. */
 	std::optional<double> sensorNoiseStd;
 	/** 255 where a rectified pixel takes some of its value from outside the
-	 * camera's image (black there), with `alpha` above 0; else empty. */
+	 * camera's image (black there: the corners an `alpha` above 0 keeps);
+	 * empty where there is no such pixel. */
 	cv::Mat1b leftNotImaged, rightNotImaged;
 };
 
