@@ -186,8 +186,7 @@ TEST(RectifiedStereo, BlackCornersAreMarkedAndLeftUnjudged)
 	cropped.prepare(*f.stereo, "frame 0");
 	whole.prepare(*f.stereo, "frame 0");
 	cv::Mat1b left, right;
-	whole.rectify(*f.stereo, left, right);
-	const auto effects = whole.effects(*f.stereo);
+	const auto effects = whole.rectify(*f.stereo, left, right);
 	ASSERT_FALSE(effects.leftNotImaged.empty());
 	ASSERT_FALSE(effects.rightNotImaged.empty());
 	const int area = left.rows * left.cols;
@@ -196,7 +195,8 @@ TEST(RectifiedStereo, BlackCornersAreMarkedAndLeftUnjudged)
 	// interpolation reads inside and outside (the wall's texture is never 0).
 	for (const auto& [image, marks] : {std::pair{left, effects.leftNotImaged}, {right, effects.rightNotImaged}})
 		EXPECT_LT(cv::countNonZero(marks & (image > 0)), cv::countNonZero(marks) / 20);
-	const auto croppedEffects = cropped.effects(*f.stereo);
+	cv::Mat1b croppedLeft, croppedRight;
+	const auto croppedEffects = cropped.rectify(*f.stereo, croppedLeft, croppedRight);
 	EXPECT_LT(croppedEffects.leftNotImaged.empty() ? 0 : cv::countNonZero(croppedEffects.leftNotImaged), area / 1000);
 
 	// The wall 2.5 m ahead as the model; every judged window clear of the

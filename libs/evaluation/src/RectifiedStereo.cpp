@@ -171,7 +171,7 @@ void RectifiedStereo::prepare(
 	m_geometry.leftPose = cameraPose + rectified;
 }
 
-void RectifiedStereo::rectify(
+RectificationEffects RectifiedStereo::rectify(
 	const mrpt::obs::CObservationStereoImages& obs, cv::Mat1b& left,
 	cv::Mat1b& right) const
 {
@@ -181,16 +181,11 @@ void RectifiedStereo::rectify(
 	{
 		left = greyLeft;
 		right = greyRight;
-		return;
+		return {};
 	}
 	cv::remap(greyLeft, left, m_mapLeftX, m_mapLeftY, cv::INTER_LINEAR);
 	cv::remap(greyRight, right, m_mapRightX, m_mapRightY, cv::INTER_LINEAR);
-}
-
-RectificationEffects RectifiedStereo::effects(const mrpt::obs::CObservationStereoImages& obs) const
-{
-	if (!remaps()) return {};
-	return {estimateNoiseStd(toGrey(obs.imageLeft)), m_leftNotImaged, m_rightNotImaged};
+	return {estimateNoiseStd(greyLeft), m_leftNotImaged, m_rightNotImaged};
 }
 
 }  // namespace lvf::evaluation

@@ -176,10 +176,8 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	});
 	// Where rectification resampled the pair, the evaluation takes the
 	// cameras' noise as taken and leaves out what they did not image.
-	const lvf::evaluation::RectificationEffects rectification = timed(r.times.rectify, [&] {
-		m_stereo.rectify(stereo, r.left, r.right);
-		return m_stereo.effects(stereo);
-	});
+	const lvf::evaluation::RectificationEffects rectification =
+		timed(r.times.rectify, [&] { return m_stereo.rectify(stereo, r.left, r.right); });
 	const lvf::evaluation::ModelEvaluator evaluator(m_options.evaluation);
 	// The search's grid starts half a window from the border.
 	const int gridFirst = m_options.evaluateSearchGridOnly ? m_options.evaluation.windowSize / 2 : 0;

@@ -93,7 +93,7 @@ class ModelEvaluator
 	/** @param left, right rectified grey images
 	 *  @param modelDisparity from renderModelDisparity()
 	 *  @param rectification what rectifying the pair did to it
-	 *    (RectifiedStereo::effects()): the cameras' noise as taken, else
+	 *    (RectifiedStereo::rectify()): the cameras' noise as taken, else
 	 *    estimated on `left`; pixels it filled from outside the images,
 	 *    whose windows, and those the model warps onto them, are not
 	 *    judged (Unverifiable) */

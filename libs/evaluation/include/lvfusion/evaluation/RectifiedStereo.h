@@ -83,14 +83,12 @@ class RectifiedStereo
 	void prepare(
 		const mrpt::obs::CObservationStereoImages& obs, const std::string& record);
 
-	/** Both images, grey, rectified. prepare() first. */
-	void rectify(
+	/** Both images, grey, rectified. prepare() first. Returns what
+	 * rectifying did to the pair (all empty where the images are used as
+	 * they are). */
+	RectificationEffects rectify(
 		const mrpt::obs::CObservationStereoImages& obs, cv::Mat1b& left,
 		cv::Mat1b& right) const;
-
-	/** What rectify() did to this pair (all empty where the images are
-	 * used as they are). */
-	RectificationEffects effects(const mrpt::obs::CObservationStereoImages& obs) const;
 
 	const RectifiedGeometry& geometry() const { return m_geometry; }
 	bool remaps() const { return !m_mapLeftX.empty(); }
