@@ -10,10 +10,10 @@
 #include "CliTestSupport.h"
 
 #include <lvfusion/common/HeightBand.h>
+#include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <lvfusion/metrics/TruthScanFile.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationStereoImages.h>
 #include <mrpt/poses/CPose3D.h>
@@ -645,11 +645,10 @@ void turnRightCamera(mrpt::obs::CObservationStereoImages& stereo, const cv::Vec3
 	stereo.rightCameraPose = mrpt::poses::CPose3DQuat(turnedRight);
 }
 
-void writeObservations(const fs::path& path, const std::vector<mrpt::serialization::CSerializable::Ptr>& objects)
+void writeObservations(const fs::path& path, const std::vector<mrpt::obs::CObservation::Ptr>& observations)
 {
-	mrpt::io::CFileGZOutputStream file(path.string());
-	auto archive = mrpt::serialization::archiveFrom(file);
-	for (const auto& o : objects) archive << *o;
+	lvf::common::RawlogWriter out(path.string(), lvf::common::RawlogFormat::Observations);
+	for (const auto& o : observations) out.appendEntry(*o);
 }
 }  // namespace
 
