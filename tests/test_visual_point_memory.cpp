@@ -26,8 +26,17 @@ lvf::evaluation::RectifiedGeometry levelCamera()
 	return g;
 }
 
-/** The whole image but a 5 px border, depths 0.3-5 m. */
-const VisualPointMemory::SearchedView kView{5, 634, 5, 474, 0.3, 5.0};
+/** The whole image but a 5 px border, depths 0.3-5 m, in both images. */
+VisualPointMemory::SearchedView wholeImageView()
+{
+	VisualPointMemory::SearchedView v;
+	v.firstColumn = v.firstRightColumn = v.firstRow = 5;
+	v.lastColumn = v.lastRightColumn = 634;
+	v.lastRow = 474;
+	v.zMin = 0.3, v.zMax = 5.0;
+	return v;
+}
+const VisualPointMemory::SearchedView kView = wholeImageView();
 
 lvf::depth::VisualPoint at(double x, double y, double z)
 {
@@ -117,4 +126,43 @@ TEST(VisualPointMemory, OffWithNoTravel)
 {
 	EXPECT_FALSE(memory(0).enabled());
 	EXPECT_TRUE(memory(0.1).enabled());
+}
+
+TEST(VisualPointMemory, KeepsWhatTheRightCameraCannotMatch)
+{
+	auto m = memory(2.0);
+	const auto g = levelCamera();
+	m.recall(mrpt::poses::CPose2D(0, 0, 0), g, kView);
+	// 0.5 m on, both 1 m ahead and 0.1 m below the camera (row 284.5,
+	// disparity 450 * 0.12 / 1 = 54 px): 0.643 m left is the left image's
+	// column 30.2, whose match would lie at -23.8, off the right image; 0.5
+	// m left is column 94.5, matched at 40.5.
+	m.remember({at(1.5, 0.643, 0.9), at(1.5, 0.5, 0.9)});
+	const auto kept = m.recall(mrpt::poses::CPose2D(0.5, 0, 0), g, kView);
+	ASSERT_EQ(kept.size(), 1u) << "the search could not have matched the first: it is still remembered";
+	EXPECT_NEAR(kept[0].robot.y(), 0.643, 1e-12);
+}
+
+TEST(VisualPointMemory, KeepsWhatFallsOnPixelsNoCameraImaged)
+{
+	auto m = memory(2.0);
+	const auto g = levelCamera();
+	// Black corners of a rectified pair: the left image's bottom right, and
+	// in the right image where the second point's match lies.
+	auto view = kView;
+	view.leftNotImaged = cv::Mat1b::zeros(g.size);
+	view.rightNotImaged = cv::Mat1b::zeros(g.size);
+	view.leftNotImaged(cv::Rect(440, 320, 30, 20)).setTo(255);  // holds (454.5, 329.5)
+	view.rightNotImaged(cv::Rect(380, 270, 20, 30)).setTo(255);	 // holds (390.0, 284.5)
+	m.recall(mrpt::poses::CPose2D(0, 0, 0), g, view);
+	// 0.5 m on, each 1 m ahead (disparity 54 px): 0.3 m right and 0.2 m
+	// below the camera is the left image's (454.5, 329.5), marked; 0.277 m
+	// right, 0.1 m below is (444.0, 284.5), unmarked, matched at 390.0,
+	// marked; 0.1 m right is (364.5, 284.5), matched at 310.5: neither.
+	const double yMarkedRight = -(390.0 + 54.0 - 319.5) / 450.0;
+	m.remember({at(1.5, -0.3, 0.8), at(1.5, yMarkedRight, 0.9), at(1.5, -0.1, 0.9)});
+	const auto kept = m.recall(mrpt::poses::CPose2D(0.5, 0, 0), g, view);
+	ASSERT_EQ(kept.size(), 2u) << "the unmarked third point was this frame's to find";
+	EXPECT_NEAR(kept[0].robot.y(), -0.3, 1e-12);
+	EXPECT_NEAR(kept[1].robot.y(), yMarkedRight, 1e-12);
 }

@@ -230,11 +230,14 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 		if (m_memory.enabled() && odometry)
 		{
 			// The searched image: the columns the search's points can lie
-			// at, the rows where its window fits.
+			// at, the rows and right-image columns where its window fits.
 			const int half = m_options.evaluation.windowSize / 2;
+			const float lastRow = float(r.geometry.size.height - 1 - half);
+			const float lastRightColumn = float(r.geometry.size.width - 1 - half);
 			r.remembered = m_memory.recall(*odometry, r.geometry,
-				{r.search.firstColumn, r.search.lastColumn, float(half), float(r.geometry.size.height - 1 - half),
-					m_options.depth.zMin, m_options.depth.zMax});
+				{r.search.firstColumn, r.search.lastColumn, float(half), lastRow, m_options.depth.zMin,
+					m_options.depth.zMax, float(half), lastRightColumn, rectification.leftNotImaged,
+					rectification.rightNotImaged});
 			m_memory.remember(r.search.points);
 			withRemembered = r.search.points;
 			withRemembered.insert(withRemembered.end(), r.remembered.begin(), r.remembered.end());

@@ -54,11 +54,19 @@ std::vector<lvf::depth::VisualPoint> VisualPointMemory::recall(
 	const Eigen::Isometry3d robotFromOdometry = rigid(mrpt::poses::CPose3D(odometry)).inverse();
 	const Eigen::Isometry3d cameraFromOdometry = rigid(geometry.leftPose).inverse() * robotFromOdometry;
 	// Whether the present search could have found the point: in front of
-	// the camera within the searched depths, inside the searched pixels.
+	// the camera within the searched depths, inside the searched pixels of
+	// the left image, its match inside the right one, neither on a pixel
+	// no camera imaged.
+	auto marked = [](const cv::Mat1b& marks, double u, double v) {
+		return !marks.empty() && marks(static_cast<int>(v + 0.5), static_cast<int>(u + 0.5)) != 0;
+	};
 	auto inSearchedView = [&](const Eigen::Vector3d& c) {
 		if (!(c.z() >= view.zMin && c.z() <= view.zMax)) return false;
 		const double u = geometry.cx + geometry.f * c.x() / c.z(), v = geometry.cy + geometry.f * c.y() / c.z();
-		return u >= view.firstColumn && u <= view.lastColumn && v >= view.firstRow && v <= view.lastRow;
+		if (!(u >= view.firstColumn && u <= view.lastColumn && v >= view.firstRow && v <= view.lastRow)) return false;
+		const double uRight = u + geometry.cxOffset - geometry.fB() / c.z();
+		if (!(uRight >= view.firstRightColumn && uRight <= view.lastRightColumn)) return false;
+		return !marked(view.leftNotImaged, u, v) && !marked(view.rightNotImaged, uRight, v);
 	};
 	constexpr float kNoPixel = std::numeric_limits<float>::quiet_NaN();
 	std::vector<lvf::depth::VisualPoint> out;

@@ -18,8 +18,9 @@
 //
 // The present frame has the last word wherever it could have looked: a
 // remembered point that projects into the part of the left image the
-// search covers (in front of the camera, nearer than z_max) is dropped,
-// found again or not, so a phantom lives only while it stays out of view.
+// search covers (in front of the camera, nearer than z_max), and whose
+// match would lie inside the right image, is dropped, found again or not,
+// so a phantom lives only while it stays out of view.
 // Points are forgotten once the robot has travelled `max_travel` since they
 // were seen (odometry drifts).
 
@@ -28,6 +29,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <limits>
 #include <vector>
 
 namespace lvf::fusion
@@ -49,11 +51,19 @@ class VisualPointMemory
 	};
 
 	/** The part of the rectified left image the present search covers [px],
-	 * and the farthest depth it searches [m]. */
+	 * the depths it searches [m], and where it could not match: a point
+	 * whose place in the right image lies outside the columns the right
+	 * windows fit in (near the left image's left edge the right camera
+	 * does not see what the left one does), or on a pixel rectification
+	 * filled from outside either camera's image (a black corner). */
 	struct SearchedView
 	{
 		float firstColumn = 0, lastColumn = 0, firstRow = 0, lastRow = 0;
 		double zMin = 0, zMax = 0;
+		float firstRightColumn = -std::numeric_limits<float>::infinity();
+		float lastRightColumn = std::numeric_limits<float>::infinity();
+		/** RectificationEffects' marks; empty: none. */
+		cv::Mat1b leftNotImaged, rightNotImaged;
 	};
 
 	VisualPointMemory() = default;
