@@ -5,6 +5,7 @@
 // of each method, and recall / phantom rate / range error of each against
 // the truth scans (printed after the benchmarks, FusionBenchmarks.h).
 
+#include "DenseScan.h"
 #include "FusionBenchmarks.h"
 #include "StageMedians.h"
 
@@ -15,7 +16,6 @@
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/WorldLoader.h>
 
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -67,29 +67,13 @@ struct FusionFixture
 		return f;
 	}
 
-	/** Fused scan of frame k by dense matching; with `times`, the time of
-	 * its two stages (matching, disparity -> fused scan) recorded as `name`. */
+	/** Fused scan of frame k by dense matching (DenseScan.h). */
 	mrpt::obs::CObservation2DRangeScan::Ptr dense(
 		size_t k, lvf::depth::DenseMatcher m, lvf::bench::StageMedians* times = nullptr,
 		const std::string& name = {}) const
 	{
-		using Clock = std::chrono::steady_clock;
-		auto ms = [](Clock::time_point a, Clock::time_point b) {
-			return std::chrono::duration<double, std::milli>(b - a).count();
-		};
-		const auto t0 = Clock::now();
-		const auto d = lvf::depth::denseDisparity(left[k], right[k], geometry, options.depth.zMin, m);
-		const auto t1 = Clock::now();
-		const auto points = lvf::depth::disparityToPoints(
-			d, geometry, options.band, options.depth.zMin, options.depth.zMax, options.depth.pixelStride);
-		const lvf::fusion::ScanFusion fusion(options.fusion);
-		auto fused = lvf::fusion::ScanFusion::fuse(*frames[k].scan, fusion.visualRanges(*frames[k].scan, points));
-		if (times)
-		{
-			times->add(name, "matching", ms(t0, t1));
-			times->add(name, "to_scan", ms(t1, Clock::now()));
-		}
-		return fused;
+		return denseFusedScan(
+			left[k], right[k], geometry, options, options.depth.zMin, *frames[k].scan, m, times, name);
 	}
 };
 

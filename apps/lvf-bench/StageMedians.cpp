@@ -47,13 +47,13 @@ double StageMedians::medianTotal(const std::string& method) const
 	return medianOf(totals);
 }
 
-void StageMedians::print(std::ostream& out, const std::string& baseline) const
+void StageMedians::print(std::ostream& out, const std::string& baseline, const std::string& indent) const
 {
 	const double base = medianTotal(baseline);
 	for (const auto& name : m_methodOrder)
 	{
 		const Method& m = m_methods.at(name);
-		out << "  " << std::setw(29) << std::left << name << std::right << std::fixed
+		out << indent << std::setw(29) << std::left << name << std::right << std::fixed
 			<< std::setprecision(2);
 		for (const auto& stage : m.stageOrder) out << "  " << stage << " " << median(name, stage);
 		const double total = medianTotal(name);

@@ -22,9 +22,9 @@ class StageMedians
 	/** Median over frames of the per-frame total of all stages [ms]. */
 	double medianTotal(const std::string& method) const;
 
-	/** One line per method: each stage's median, the total's median, and
-	 * the total's ratio against `baseline`'s. */
-	void print(std::ostream& out, const std::string& baseline) const;
+	/** One line per method, after `indent`: each stage's median, the
+	 * total's median, and the total's ratio against `baseline`'s. */
+	void print(std::ostream& out, const std::string& baseline, const std::string& indent = "  ") const;
 
    private:
 	struct Method

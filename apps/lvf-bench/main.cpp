@@ -13,6 +13,8 @@
 //               into the same fused scan; time per frame, the median time
 //               per frame of each stage of each method, and recall /
 //               phantom rate / range error of each against the truth scans.
+//   Real images the Middlebury scenes with a floor (RealScenes.cpp): the
+//               fusion, SGBM and BM per scene, time and accuracy.
 //   VFH         one VFH+ cycle on the default window of a 10 cm grid, and
 //               CHolonomicVFH against MRPT's CHolonomicVFF / CHolonomicND on
 //               the same TP-obstacles.
@@ -23,6 +25,7 @@
 // core (both split their rows among them).
 
 #include "FusionBenchmarks.h"
+#include "RealScenes.h"
 
 #include <benchmark/benchmark.h>
 #include <lvfusion/common/ProcessMemory.h>
@@ -30,7 +33,9 @@
 
 #include <iomanip>
 #include <iostream>
+#include <cstring>
 #include <map>
+#include <string>
 #include <tuple>
 #include <unistd.h>
 
@@ -66,12 +71,39 @@ const std::vector<std::tuple<std::string, std::string, std::string>> kComparison
 	{"BM_Holonomic_VFH", "BM_Holonomic_ND", "holonomic step, CHolonomicVFH vs MRPT's CHolonomicND"},
 };
 
+/** Takes lvf-bench's own option out of argv (Google Benchmark refuses what
+ * it does not know): `--middlebury DIR` or `--middlebury=DIR`, the folder
+ * of Middlebury scenes; its default is ../shared/data/middlebury. */
+std::string takeMiddleburyOption(int& argc, char** argv)
+{
+	std::string dir = LVF_MIDDLEBURY_DIR;
+	int kept = 1;
+	for (int i = 1; i < argc; i++)
+	{
+		const std::string arg = argv[i];
+		if (arg == "--middlebury" && i + 1 < argc)
+			dir = argv[++i];
+		else if (arg.rfind("--middlebury=", 0) == 0)
+			dir = arg.substr(std::strlen("--middlebury="));
+		else
+			argv[kept++] = argv[i];
+	}
+	argc = kept;
+	return dir;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
 	cv::setNumThreads(1);  // single-thread figures, for every method alike
 	lvf::common::retainLargeAllocations();	// as the apps do (ProcessMemory.h)
+	const std::string middlebury = takeMiddleburyOption(argc, argv);
+	for (int i = 1; i < argc; i++)
+		if (std::strcmp(argv[i], "--help") == 0)
+			std::cout << "lvf-bench [--middlebury DIR] [Google Benchmark's options below]\n"
+					  << "  --middlebury DIR  Middlebury 2014 scenes for the real-image table (default "
+					  << LVF_MIDDLEBURY_DIR << ")\n\n";
 	benchmark::Initialize(&argc, argv);
 	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 	RecordingReporter reporter;
@@ -98,6 +130,7 @@ int main(int argc, char** argv)
 		std::cout << "  ... with every cell of the window occupied: " << full->second << " ms\n";
 	lvf::bench::printStageMedians(3);
 	lvf::bench::printAccuracy();
+	lvf::bench::printRealScenes(middlebury, 5);
 	benchmark::Shutdown();
 	return 0;
 }

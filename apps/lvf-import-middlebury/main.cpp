@@ -4,20 +4,15 @@
 // truth shows) with truth scans beside it, so that lvf-fuse can be scored on
 // real images (issue 3). Options: --help.
 
-#include "FloorFit.h"
-#include "MiddleburyScene.h"
-#include "ScanSynthesis.h"
 #include "TruthFiles.h"
-#include "VirtualRobotFrame.h"
 
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/metrics/ScanMetrics.h>
+#include <lvfusion/middlebury/SceneImport.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/obs/CObservationStereoImages.h>
-#include <mrpt/poses/CPose3DQuat.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <algorithm>
@@ -31,25 +26,6 @@ const std::string kApp = "lvf-import-middlebury";
 /** Middlebury images carry no time: every import is stamped with
  * lvf-simulate's default start time, so that imports are reproducible. */
 const double kTimestamp = 1.7e9;
-
-mrpt::obs::CObservationStereoImages::Ptr stereoObservation(
-	const lvf::apps::MiddleburyScene& scene, const lvf::apps::VirtualRobotFrame& frame,
-	mrpt::Clock::time_point stamp)
-{
-	auto obs = std::make_shared<mrpt::obs::CObservationStereoImages>();
-	obs->sensorLabel = "STEREO";
-	obs->timestamp = stamp;
-	obs->imageLeft = scene.left;
-	obs->imageRight = scene.right;
-	obs->hasImageRight = true;
-	obs->leftCamera = scene.calib.leftCamera();
-	obs->rightCamera = scene.calib.rightCamera();
-	// Rectified pair: the right camera is the left one moved along its x.
-	obs->rightCameraPose =
-		mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(scene.calib.baseline, 0, 0, 0, 0, 0));
-	obs->cameraPose = mrpt::poses::CPose3DQuat(frame.cameraPose());
-	return obs;
-}
 
 size_t countTrue(const std::vector<bool>& v) { return static_cast<size_t>(std::count(v.begin(), v.end(), true)); }
 
@@ -74,37 +50,27 @@ int run(int argc, char** argv)
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
 
-	lvf::apps::LaserSlice slice;
-	slice.height = argLaserHeight.getValue();
-	slice.maxRange = argMaxRange.getValue();
-	const lvf::HeightBand band{argObstacleMin.getValue(), argRobotHeight.getValue()};
-	const double resolution = mrpt::DEG2RAD(argResolution.getValue());
-	const bool fovGiven = argFov.isSet();
+	lvf::middlebury::SceneImportOptions options;
+	options.slice.height = argLaserHeight.getValue();
+	options.slice.maxRange = argMaxRange.getValue();
+	options.band = {argObstacleMin.getValue(), argRobotHeight.getValue()};
+	options.resolutionRad = mrpt::DEG2RAD(argResolution.getValue());
+	if (argFov.isSet()) options.apertureRad = mrpt::DEG2RAD(argFov.getValue());
+	const auto& slice = options.slice;
+	const auto& band = options.band;
 	if (!(slice.height > 0)) throw InputError("--laser-height", "", "must be > 0");
 	if (!(band.low >= 0)) throw InputError("--obstacle-min-height", "", "must be >= 0");
 	if (!(band.high > band.low)) throw InputError("--robot-height", "", "must be above --obstacle-min-height");
 	if (!(slice.maxRange > 0)) throw InputError("--max-range", "", "must be > 0");
 	if (!(argResolution.getValue() > 0 && argResolution.getValue() <= 10))
 		throw InputError("--resolution-deg", "", "must be in (0, 10]");
-	if (fovGiven && !(argFov.getValue() >= argResolution.getValue() && argFov.getValue() <= 360))
+	if (argFov.isSet() && !(argFov.getValue() >= argResolution.getValue() && argFov.getValue() <= 360))
 		throw InputError("--fov-deg", "", "must be in [--resolution-deg, 360]");
 
 	mrpt::system::CTicTac timer;
-	const auto scene = lvf::apps::loadMiddleburyScene(argScene.getValue());
-	const lvf::apps::FloorFitOptions floorOptions;
-	const auto floor = lvf::apps::fitFloor(scene, floorOptions);
-	const lvf::apps::VirtualRobotFrame frame(floor);
-	std::vector<Eigen::Vector3d> points;
-	points.reserve(scene.points.size());
-	for (const auto& g : scene.points) points.push_back(frame.toRobot(g.camera));
-
-	const auto bearings = fovGiven
-		? lvf::apps::ScanBearings::fromAperture(mrpt::DEG2RAD(argFov.getValue()), resolution)
-		: lvf::apps::cameraFieldOfView(scene.calib, frame, resolution);
 	const auto stamp = mrpt::Clock::fromDouble(kTimestamp);
-	const auto scan = lvf::apps::synthesiseLaser(points, bearings, slice, stamp);
-	const auto truth = lvf::apps::truthScan(points, bearings, band);
-	const auto stereo = stereoObservation(scene, frame, stamp);
+	const auto imported = lvf::middlebury::importScene(argScene.getValue(), options, stamp);
+	const auto& [scene, floor, frame, bearings, scan, stereo, truth] = imported;
 	const auto inView = lvf::metrics::bearingsInView(*scan, truth, *stereo, band, slice.maxRange);
 	const auto hidden = lvf::metrics::hiddenBearings(*scan, truth, inView);
 
@@ -140,7 +106,7 @@ int run(int argc, char** argv)
 			"  wrote %s, %s_truth_scans.csv, %s_gt_poses.txt in %s\n",
 			kApp.c_str(), scene.name.c_str(), c.width, c.height, c.f, c.baseline,
 			scene.points.size(), scene.unknownPixels, timer.Tac(), floor.inliers,
-			floor.candidates, 1000 * floorOptions.inlierBand, 1000 * floor.rms, 1000 * floor.medianResidual, frame.cameraHeight(),
+			floor.candidates, 1000 * options.floor.inlierBand, 1000 * floor.rms, 1000 * floor.medianResidual, frame.cameraHeight(),
 			frame.tiltDeg(), frame.rollDeg(), slice.height, valid, scan->getScanSize(),
 			mrpt::RAD2DEG(bearings.aperture), mrpt::RAD2DEG(bearings.step()), slice.maxRange,
 			band.low, band.high, withTruth, countTrue(hidden), countTrue(inView),

@@ -9,10 +9,11 @@ cv::Mat1f denseDisparity(
 	const cv::Mat1b& left, const cv::Mat1b& right, const lvf::evaluation::RectifiedGeometry& g,
 	double zMin, DenseMatcher matcher)
 {
-	// OpenCV wants the disparity range as a multiple of 16 from minDisparity.
-	const double dMax = g.fB() / zMin - g.cxOffset;
-	const int numDisparities = 16 * static_cast<int>(std::ceil(std::max(16.0, dMax) / 16.0));
+	// OpenCV's disparity is u_left - u_right = fB / Z - cxOffset: from
+	// minDisparity (Z at infinity) up to z_min's, as a multiple of 16.
 	const int minDisparity = static_cast<int>(std::floor(-g.cxOffset));
+	const double span = g.fB() / zMin - g.cxOffset - minDisparity;
+	const int numDisparities = 16 * static_cast<int>(std::ceil(std::max(16.0, span) / 16.0));
 	cv::Mat raw;
 	if (matcher == DenseMatcher::SemiGlobal)
 	{

@@ -1,4 +1,4 @@
-#include "PfmFile.h"
+#include <lvfusion/middlebury/PfmFile.h>
 
 #include <lvfusion/common/InputError.h>
 #include <mrpt/config.h>
@@ -11,7 +11,7 @@
 
 using lvf::common::InputError;
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 namespace
 {
@@ -92,4 +92,4 @@ cv::Mat readPfm(const std::string& path)
 	return image;
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

@@ -13,11 +13,11 @@
 
 #include <string>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 /** Returns a CV_32FC1 image, rows top to bottom (row 0 = top of the picture),
  * values as stored (inf where Middlebury's disparity is unknown). Throws
  * InputError naming the file and the header field or "pixel data". */
 cv::Mat readPfm(const std::string& path);
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

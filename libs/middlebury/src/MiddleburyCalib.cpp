@@ -1,4 +1,4 @@
-#include "MiddleburyCalib.h"
+#include <lvfusion/middlebury/MiddleburyCalib.h>
 
 #include <lvfusion/common/InputError.h>
 #include <mrpt/core/format.h>
@@ -12,7 +12,7 @@
 
 using lvf::common::InputError;
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 namespace
 {
@@ -60,6 +60,8 @@ class CalibFields
 	{
 		return "line " + std::to_string(get(key).line) + ": " + key;
 	}
+
+	bool has(const std::string& key) const { return m_fields.count(key) != 0; }
 
 	double number(const std::string& key) const { return parse(key, get(key).value); }
 
@@ -151,6 +153,7 @@ MiddleburyCalib readMiddleburyCalib(const std::string& path)
 	const double baselineMm = fields.number("baseline");
 	c.width = fields.integer("width");
 	c.height = fields.integer("height");
+	if (fields.has("ndisp")) c.ndisp = fields.integer("ndisp");
 
 	// The importer's geometry (one f, one cy, Z = b f / (d + doffs)) holds
 	// only for a rectified pair with square pixels: check that it is one.
@@ -180,4 +183,4 @@ MiddleburyCalib readMiddleburyCalib(const std::string& path)
 	return c;
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

@@ -10,14 +10,14 @@
 // walls and ceilings), and refits by total least squares with Eigen's
 // SelfAdjointEigenSolver.
 
-#include "MiddleburyScene.h"
+#include <lvfusion/middlebury/MiddleburyScene.h>
 
 #include <Eigen/Core>
 
 #include <cstddef>
 #include <cstdint>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 struct FloorPlane
 {
@@ -70,4 +70,4 @@ struct FloorFitOptions
  * when no plane passes the options' tests. */
 FloorPlane fitFloor(const MiddleburyScene& scene, const FloorFitOptions& options = {});
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

@@ -1,4 +1,4 @@
-#include "VirtualRobotFrame.h"
+#include <lvfusion/middlebury/VirtualRobotFrame.h>
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/CMatrixFixed.h>
@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 VirtualRobotFrame::VirtualRobotFrame(const FloorPlane& floor) : m_height(floor.offset)
 {
@@ -34,4 +34,4 @@ VirtualRobotFrame::VirtualRobotFrame(const FloorPlane& floor) : m_height(floor.o
 	m_cameraPose = mrpt::poses::CPose3D::FromRotationAndTranslation(rot, position);
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

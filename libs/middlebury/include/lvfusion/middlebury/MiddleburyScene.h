@@ -4,7 +4,7 @@
 // points in the left camera's frame (MRPT camera axes: x right, y down,
 // z forward).
 
-#include "MiddleburyCalib.h"
+#include <lvfusion/middlebury/MiddleburyCalib.h>
 
 #include <Eigen/Core>
 #include <mrpt/img/CImage.h>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 struct GroundTruthPoint
 {
@@ -44,4 +44,4 @@ struct MiddleburyScene
  * line, field or header entry) otherwise. */
 MiddleburyScene loadMiddleburyScene(const std::string& dir);
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

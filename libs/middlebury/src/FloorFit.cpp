@@ -1,4 +1,4 @@
-#include "FloorFit.h"
+#include <lvfusion/middlebury/FloorFit.h>
 
 #include <lvfusion/common/InputError.h>
 #include <mrpt/core/bits_math.h>
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 namespace
 {
@@ -122,4 +122,4 @@ FloorPlane fitFloor(const MiddleburyScene& scene, const FloorFitOptions& o)
 	return best;
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

@@ -1,5 +1,5 @@
-#include "MiddleburyScene.h"
-#include "PfmFile.h"
+#include <lvfusion/middlebury/MiddleburyScene.h>
+#include <lvfusion/middlebury/PfmFile.h>
 
 #include <lvfusion/common/InputError.h>
 #include <mrpt/core/format.h>
@@ -11,7 +11,7 @@
 using lvf::common::InputError;
 namespace fs = std::filesystem;
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 namespace
 {
@@ -77,4 +77,4 @@ MiddleburyScene loadMiddleburyScene(const std::string& dir)
 	return s;
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

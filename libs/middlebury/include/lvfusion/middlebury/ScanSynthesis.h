@@ -9,8 +9,8 @@
 // A point counts for the ray whose bearing is nearest its own, so the rays
 // tile the aperture as a real scanner's beams (about one step wide) do.
 
-#include "MiddleburyCalib.h"
-#include "VirtualRobotFrame.h"
+#include <lvfusion/middlebury/MiddleburyCalib.h>
+#include <lvfusion/middlebury/VirtualRobotFrame.h>
 
 #include <lvfusion/common/HeightBand.h>
 #include <lvfusion/common/LaserRange.h>
@@ -19,7 +19,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 struct ScanBearings
 {
@@ -69,4 +69,4 @@ std::vector<float> truthScan(
 	const std::vector<Eigen::Vector3d>& robotPoints, const ScanBearings& bearings,
 	const lvf::HeightBand& band);
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

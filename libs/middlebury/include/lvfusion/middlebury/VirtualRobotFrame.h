@@ -5,12 +5,12 @@
 // floor normal). The left camera's pose in it is the stereo observation's
 // cameraPose; the synthesised laser sits at its origin.
 
-#include "FloorFit.h"
+#include <lvfusion/middlebury/FloorFit.h>
 
 #include <Eigen/Core>
 #include <mrpt/poses/CPose3D.h>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 class VirtualRobotFrame
 {
@@ -45,4 +45,4 @@ class VirtualRobotFrame
 	mrpt::poses::CPose3D m_cameraPose;
 };
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury

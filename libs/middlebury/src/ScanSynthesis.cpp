@@ -1,10 +1,10 @@
-#include "ScanSynthesis.h"
+#include <lvfusion/middlebury/ScanSynthesis.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace lvf::apps
+namespace lvf::middlebury
 {
 namespace
 {
@@ -91,4 +91,4 @@ std::vector<float> truthScan(
 		robotPoints, bearings, [&](const Eigen::Vector3d& p) { return band.contains(p.z()); });
 }
 
-}  // namespace lvf::apps
+}  // namespace lvf::middlebury
