@@ -5,7 +5,7 @@
 // of each method, and recall / phantom rate / range error of each against
 // the truth scans (printed after the benchmarks, FusionBenchmarks.h).
 
-#include "DenseScan.h"
+#include "MethodRuns.h"
 #include "FusionBenchmarks.h"
 #include "StageMedians.h"
 
@@ -67,7 +67,7 @@ struct FusionFixture
 		return f;
 	}
 
-	/** Fused scan of frame k by dense matching (DenseScan.h). */
+	/** Fused scan of frame k by dense matching (MethodRuns.h). */
 	mrpt::obs::CObservation2DRangeScan::Ptr dense(
 		size_t k, lvf::depth::DenseMatcher m, lvf::bench::StageMedians* times = nullptr,
 		const std::string& name = {}) const
@@ -152,24 +152,19 @@ void printStageMedians(int passes)
 		cv::setNumThreads(1);
 	};
 	lvf::bench::StageMedians medians;
-	auto addFusionTimes = [&](const std::string& name, const lvf::fusion::CLaserStereoFusion::StageTimes& t) {
-		for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model}, {"rectify", t.rectify},
-				 {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
-			medians.add(name, stage, ms);
-	};
 	for (int pass = 0; pass < passes; pass++)
 		for (size_t k = 0; k < f.frames.size(); k++)
 		{
 			const auto& frame = f.frames[k];
 			for (size_t i = 0; i < fusions.size(); i++)
-				addFusionTimes(variants[i].first, fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
+				recordFusionTimes(medians, variants[i].first, fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
 			const auto& turned = f.framesToRectify[k];
-			addFusionTimes(toRectify, fusionToRectify.process(*turned.scan, *turned.stereo, "frame", turned.odometry).times);
+			recordFusionTimes(medians, toRectify, fusionToRectify.process(*turned.scan, *turned.stereo, "frame", turned.odometry).times);
 			f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName);
 			f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName);
 			if (cores > 1)
 				onCores([&] {
-					addFusionTimes(fusionOnCores,
+					recordFusionTimes(medians, fusionOnCores,
 						parallelFusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
 					f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, sgbmOnCores);
 				});

@@ -1,8 +1,9 @@
 #pragma once
-// The dense baselines' fused scan, as lvf-bench compares them with the
-// paper's method: a whole-image disparity map (DenseStereoBaseline.h) turned
-// into visual points on the fusion's pixel grid and through the same
-// ScanFusion, so that every method is scored by the same rules.
+// How lvf-bench runs each method on a frame and times it: the dense
+// baselines' fused scan — a whole-image disparity map (DenseStereoBaseline.h)
+// turned into visual points on the fusion's pixel grid and through the same
+// ScanFusion, so that every method is scored by the same rules — and the
+// fusion's own stage times, recorded alike.
 
 #include "StageMedians.h"
 
@@ -21,5 +22,9 @@ mrpt::obs::CObservation2DRangeScan::Ptr denseFusedScan(
 	const lvf::fusion::CLaserStereoFusion::TOptions& options, double zMin,
 	const mrpt::obs::CObservation2DRangeScan& laser, lvf::depth::DenseMatcher matcher,
 	StageMedians* times = nullptr, const std::string& name = {});
+
+/** Records one frame's stage times of the fusion as `name`. */
+void recordFusionTimes(
+	StageMedians& times, const std::string& name, const lvf::fusion::CLaserStereoFusion::StageTimes& t);
 
 }  // namespace lvf::bench

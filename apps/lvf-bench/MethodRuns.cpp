@@ -1,4 +1,4 @@
-#include "DenseScan.h"
+#include "MethodRuns.h"
 
 #include <chrono>
 
@@ -27,6 +27,14 @@ mrpt::obs::CObservation2DRangeScan::Ptr denseFusedScan(
 		times->add(name, "to_scan", ms(t1, Clock::now()));
 	}
 	return fused;
+}
+
+void recordFusionTimes(
+	StageMedians& times, const std::string& name, const lvf::fusion::CLaserStereoFusion::StageTimes& t)
+{
+	for (const auto& [stage, ms] : {std::pair{"lines", t.lines}, {"model", t.model}, {"rectify", t.rectify},
+			 {"evaluate", t.evaluate}, {"search", t.search}, {"fuse", t.fuse}})
+		times.add(name, stage, ms);
 }
 
 }  // namespace lvf::bench
