@@ -45,12 +45,12 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 	cv::Mat1b left, right;
 	rectified.rectify(stereo, left, right);
 	// The dense matchers search the disparities the scene says it spans
-	// (calib.txt's ndisp), not the robot's z_min: from 0.3 m, 600 of them,
-	// wider than most of the image. A narrower range only makes them faster.
+	// (calib.txt's ndisp), not the robot's z_min: from 0.3 m, 400-610 of them,
+	// most of the image's width. A narrower range only makes them faster.
 	const auto& calib = imported.scene.calib;
 	const double denseZMin = calib.ndisp > 0 ? calib.depth(calib.ndisp) : options.depth.zMin;
 	// The fusion as shipped searches from the robot's z_min (0.3 m: up to
-	// 640 px of disparity on these rigs); and over the scene's range, as the
+	// 443-643 px of disparity on these rigs); and over the scene's range, as the
 	// dense matchers do.
 	auto sceneRange = options;
 	sceneRange.depth.zMin = denseZMin;
