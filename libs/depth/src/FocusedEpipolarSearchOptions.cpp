@@ -51,7 +51,7 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "floor_disparity_margin", floorDisparityMargin, "where the model is the floor, criterion a's margin in front of it at most this much disparity, the band's lower edge deciding the rest (with bound_by_height_band; finds obstacles a few cm tall on rigs that resolve them); 0: off, d_allow as on walls [px]");
 	writeOption(c, s, "criterion_b", criterionB, "search only Z <= Z_laser, in front of the model (Fig. 6b)");
 	writeOption(c, s, "criterion_c", criterionC, "search only z_min <= Z <= z_max (Fig. 6c)");
-	writeOption(c, s, "z_min", zMin, "nearest depth searched [m]");
+	writeOption(c, s, "z_min", zMin, "nearest depth searched [m]; the search's work grows with f * baseline / z_min, the disparity it reaches (0.3 m: 180 px on the simulated rig, 640 on Middlebury Motorcycle's)");
 	writeOption(c, s, "z_max", zMax, "farthest depth searched [m]");
 	writeOption(c, s, "bound_by_height_band", boundByBand, "search only depths whose point lies in the robot height band");
 	writeOption(c, s, "pixel_stride", pixelStride, "search every n-th inconsistent pixel along rows and columns");
