@@ -13,6 +13,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 
 namespace lvf::bench
 {
@@ -72,9 +73,10 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::Block, &times, kBm);
 	}
 	const auto inView = lvf::metrics::bearingsInView(scan, imported.truth, stereo, options.band, options.depth.zMax);
-	std::cout << "  " << imported.scene.name << " (" << left.cols << "x" << left.rows
-			  << "; the dense matchers over its disparities 0-" << calib.ndisp << ", from " << std::fixed
-			  << std::setprecision(2) << denseZMin << " m), median time per frame and stage [ms]:\n";
+	std::cout << "  " << imported.scene.name << " (" << left.cols << "x" << left.rows << "; the dense matchers "
+			  << (calib.ndisp > 0 ? "over its disparities 0-" + std::to_string(calib.ndisp) : std::string("from z_min"))
+			  << ", from " << std::fixed << std::setprecision(2) << denseZMin
+			  << " m), median time per frame and stage [ms]:\n";
 	times.print(std::cout, kSgbm, "    ");
 	for (const auto& name : {kFusion, kFusionSceneRange, kSgbm, kBm})
 	{
@@ -102,14 +104,17 @@ void printRealScenes(const std::string& root, int passes)
 	std::vector<std::string> skipped;
 	for (const auto& dir : dirs)
 	{
+		std::optional<lvf::middlebury::ImportedScene> imported;
 		try
 		{
-			benchScene(lvf::middlebury::importScene(dir, {}, mrpt::Clock::fromDouble(1.7e9)), passes);
+			imported = lvf::middlebury::importScene(dir, {}, mrpt::Clock::fromDouble(1.7e9));
 		}
 		catch (const lvf::common::InputError&)
 		{
 			skipped.push_back(std::filesystem::path(dir).filename().string());
+			continue;
 		}
+		benchScene(*imported, passes);
 	}
 	if (!skipped.empty())
 	{
