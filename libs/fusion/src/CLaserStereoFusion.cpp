@@ -43,6 +43,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	lvf::common::IniSection ini(source, section);
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);
+	visualFloorClearance = ini.real("visual_floor_clearance", visualFloorClearance, 0, band.high - band.low);
 	floorHeight = ini.real("floor_height", floorHeight, -100, 100);
 	facetStrayReturns = ini.flag("facet_stray_returns", facetStrayReturns);
 	joinSegmentEnds = ini.real("join_segment_ends", joinSegmentEnds, 0, 10);
@@ -65,6 +66,7 @@ void CLaserStereoFusion::TOptions::saveToConfigFile(
 {
 	writeOption(c, s, "obstacle_min_height", band.low, "lower edge of the robot height band [m]");
 	writeOption(c, s, "robot_height", band.high, "upper edge of the band: the robot's height [m]");
+	writeOption(c, s, "visual_floor_clearance", visualFloorClearance, "a visual point must lie at least this far above obstacle_min_height: floor texture triangulated a centimetre high is no obstacle [m]");
 	writeOption(c, s, "floor_height", floorHeight, "floor z in the robot frame [m]");
 	writeOption(c, s, "facet_stray_returns", facetStrayReturns, "model returns that fit no line segment as narrow walls square to their rays");
 	writeOption(c, s, "join_segment_ends", joinSegmentEnds, "join the ends of line segments on neighbouring rays at most this far apart by a wall (a corner the fit left open); 0: never [m]");
@@ -217,10 +219,10 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 
 	r.search = timed(r.times.search, [&] {
 		auto found = lvf::depth::FocusedEpipolarSearch(m_options.depth)
-			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.band,
+			.search(r.left, r.right, r.evaluation, m_options.evaluation.windowSize, r.geometry, m_options.visualBand(),
 				m_options.floorHeight);
 		r.grownPoints = lvf::depth::HorizontalSurfaceGrowth(m_options.growth)
-			.grow(r.left, r.right, r.geometry, r.evaluation, m_options.band,
+			.grow(r.left, r.right, r.geometry, r.evaluation, m_options.visualBand(),
 				m_options.depth.textureGate(r.evaluation.noiseStd), m_options.depth.pixelStride, found.points);
 		return found;
 	});
