@@ -40,32 +40,21 @@ void ModelEvaluator::TOptions::saveToConfigFile(
 
 namespace
 {
-/** Adds to `unverifiable` the pixels rectification filled from outside
- * the left image, and those whose model-warped right value reads a pixel
- * filled from outside the right one (either of the two columns around
- * where the model takes it): a black corner's edge is texture no camera
- * saw. */
-void markNotImaged(const RectificationEffects& rectification, const cv::Mat1f& modelDisparity,
-	const RectifiedGeometry& geometry, cv::Mat1b& unverifiable)
+/** The image noise the texture gates are set from: the cameras' as taken
+ * where rectification resampled the pair, else estimated on `left`. */
+double noiseStdOf(const cv::Mat1b& left, const RectificationEffects& rectification)
 {
+	return rectification.sensorNoiseStd ? *rectification.sensorNoiseStd : estimateNoiseStd(left);
+}
+
+/** The right image warped by the model (warpByModel), and every pixel it
+ * cannot be judged at: those the warp marks, and those rectification
+ * filled from outside the left image. */
+void warpForJudging(const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
+	const RectificationEffects& rectification, cv::Mat1f& warped, cv::Mat1b& unverifiable)
+{
+	warpByModel(right, modelDisparity, geometry, warped, unverifiable, rectification.rightNotImaged);
 	if (!rectification.leftNotImaged.empty()) unverifiable.setTo(255, rectification.leftNotImaged);
-	const cv::Mat1b& rightMarks = rectification.rightNotImaged;
-	if (rightMarks.empty()) return;
-	const int lastColumn = rightMarks.cols - 1;
-	for (int v = 0; v < unverifiable.rows; v++)
-	{
-		const float* d = modelDisparity[v];
-		const uint8_t* marks = rightMarks[v];
-		uint8_t* out = unverifiable[v];
-		for (int u = 0; u < unverifiable.cols; u++)
-		{
-			if (d[u] <= 0) continue;  // no model: unverifiable already
-			const float at = float(u + geometry.cxOffset) - d[u];
-			if (at < 0 || at > float(lastColumn)) continue;  // off the image: likewise
-			const int column = static_cast<int>(at);
-			if (marks[column] | marks[std::min(column + 1, lastColumn)]) out[u] = 255;
-		}
-	}
 }
 }  // namespace
 
@@ -76,15 +65,14 @@ ModelEvaluation ModelEvaluator::evaluate(
 {
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = rectification.sensorNoiseStd ? *rectification.sensorNoiseStd : estimateNoiseStd(left);
+	out.noiseStd = noiseStdOf(left, rectification);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
 
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
-	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
-	markNotImaged(rectification, modelDisparity, geometry, unverifiable);
+	warpForJudging(right, modelDisparity, geometry, rectification, warped, unverifiable);
 	// A window touching an unverifiable pixel mixes in meaningless values.
 	cv::dilate(unverifiable, unverifiable, cv::Mat::ones(window, CV_8U));
 
@@ -128,13 +116,12 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 		throw std::invalid_argument("evaluateGrid: the grid must start at window_size / 2 or later");
 	ModelEvaluation out;
 	out.modelDisparity = modelDisparity;
-	out.noiseStd = rectification.sensorNoiseStd ? *rectification.sensorNoiseStd : estimateNoiseStd(left);
+	out.noiseStd = noiseStdOf(left, rectification);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
-	warpByModel(right, modelDisparity, geometry, warped, unverifiable);
-	markNotImaged(rectification, modelDisparity, geometry, unverifiable);
+	warpForJudging(right, modelDisparity, geometry, rectification, warped, unverifiable);
 
 	out.ncc = cv::Mat1f::zeros(size);
 	out.leftMean = cv::Mat1f::zeros(size);

@@ -1,6 +1,7 @@
 #include <lvfusion/common/RowBands.h>
 #include <lvfusion/evaluation/ModelWarp.h>
 
+#include <algorithm>
 #include <array>
 
 namespace lvf::evaluation
@@ -23,7 +24,7 @@ std::array<float, kSubpixelSteps> rightWeights()
 
 void warpByModel(
 	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	cv::Mat1f& warped, cv::Mat1b& unverifiable)
+	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged)
 {
 	static const std::array<float, kSubpixelSteps> kRightWeight = rightWeights();
 	const cv::Size size = right.size();
@@ -31,16 +32,23 @@ void warpByModel(
 	unverifiable.create(size);
 	const int width = size.width;
 	const float cxOffset = static_cast<float>(geometry.cxOffset), lastColumn = static_cast<float>(width - 1);
+	const bool marked = !rightNotImaged.empty();
 	// Rows are independent: on OpenCV's threads (RowBands.h).
 	lvf::common::forEachRow(size.height, [&](int v) {
 		const float* d = modelDisparity.ptr<float>(v);
 		const uint8_t* row = right.ptr<uint8_t>(v);
 		float* out = warped.ptr<float>(v);
 		uint8_t* bad = unverifiable.ptr<uint8_t>(v);
+		const uint8_t* marks = marked ? rightNotImaged.ptr<uint8_t>(v) : nullptr;
 		for (int u = 0; u < width; u++)
 		{
 			const float x = static_cast<float>(u) - d[u] + cxOffset;
 			bad[u] = d[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
+			if (marks && !bad[u])
+			{
+				const int column = static_cast<int>(x);
+				if (marks[column] | marks[std::min(column + 1, width - 1)]) bad[u] = 255;
+			}
 			// remap rounds the column to the nearest 1/32 (ties to even) and
 			// weights its two neighbours; outside the image they are 0.
 			const int fixed = cvRound(x * kSubpixelSteps);

@@ -9,8 +9,11 @@ namespace lvf::evaluation
 {
 /** The right image resampled where the model sends each left pixel (its
  * row, `modelDisparity` to the left: column u + cxOffset - d), and the
- * pixels where that cannot be done (255: no model surface, or the column
- * leaves the right image).
+ * pixels where that cannot be done (255: no model surface, the column
+ * leaves the right image, or, with `rightNotImaged` (RectificationEffects),
+ * either of the two columns around it is a pixel rectification filled from
+ * outside the camera's image: a black corner's edge is texture no camera
+ * saw).
  *
  * The values are cv::remap's (INTER_LINEAR, BORDER_CONSTANT 0) with maps
  * x = u + cxOffset - d, y = v, bit for bit (test_model_evaluation compares
@@ -21,6 +24,6 @@ namespace lvf::evaluation
  * frame, this 0.45. */
 void warpByModel(
 	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	cv::Mat1f& warped, cv::Mat1b& unverifiable);
+	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged = {});
 
 }  // namespace lvf::evaluation
