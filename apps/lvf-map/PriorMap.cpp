@@ -52,7 +52,7 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 		mrpt::maps::CSimpleMap simple;
 		readSerialised(path, simple);
 		if (simple.empty()) throw InputError(path, "", "empty simple map");
-		map.loadFromProbabilisticPosesAndObservations(simple);
+		loadSimpleMap(simple, map);
 		return mrpt::format("%s (simple map, %zu keyframes)", path.c_str(), simple.size());
 	}
 	auto& grid = gridOf(map, path);
@@ -70,6 +70,25 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 	throw InputError(
 		path, "", (ext.empty() ? std::string("no file extension to tell the map format") : "unknown map format '." + ext + "'") +
 			": expected .gridmap(.gz), .simplemap(.gz) or an image (.png, .jpg, .bmp, .pgm)");
+}
+
+void loadSimpleMap(const mrpt::maps::CSimpleMap& simple, mrpt::maps::CMultiMetricMap& map)
+{
+	// (MRPT writes and reads no keyframe without its pose and observations.)
+	// MRPT's loadFromProbabilisticPosesAndObservations clears the map first,
+	// and a cleared COccupancyGridMap2D is 20 m x 20 m round the origin; it
+	// then grows to take in the scans but never shrinks. A log whose odometry
+	// starts far out (the Freiburg logs: mit-csail at x = 577 m) got a prior
+	// grid reaching back to the origin, 12160 x 1600 cells for a building
+	// 70 m across. So the grids start round the first keyframe, as the
+	// global grids do (GlobalGrids.cpp), and grow from there.
+	map.clear();
+	const mrpt::poses::CPose3D first = simple.getAsPair(0).pose->getMeanVal();
+	for (size_t i = 0; auto grid = map.mapByClass<mrpt::maps::COccupancyGridMap2D>(i); i++)
+		grid->setSize(
+			static_cast<float>(first.x() - 1), static_cast<float>(first.x() + 1), static_cast<float>(first.y() - 1),
+			static_cast<float>(first.y() + 1), grid->getResolution());
+	for (const auto& keyframe : simple) keyframe.sf->insertObservationsInto(map, keyframe.pose->getMeanVal());
 }
 
 mrpt::maps::CSimpleMap buildMapFromScans(const MapRun& run)

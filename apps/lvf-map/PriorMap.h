@@ -19,6 +19,12 @@ namespace lvf::apps
  * Throws InputError naming the file for an unknown format or a bad file. */
 std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::maps::CMultiMetricMap& map);
 
+/** Renders a non-empty `simple` into `map`, as MRPT's
+ * loadFromProbabilisticPosesAndObservations does, but with the occupancy grids
+ * started round the first keyframe rather than round the origin, so that they
+ * cover where the keyframes are and no more. */
+void loadSimpleMap(const mrpt::maps::CSimpleMap& simple, mrpt::maps::CMultiMetricMap& map);
+
 /** Poses and laser scans of the run after ICP-SLAM (MRPT's defaults, one
  * keyframe every 0.5 m or 10 degrees), in the odometry frame (the first
  * keyframe at the first odometry pose). */

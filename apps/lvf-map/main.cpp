@@ -112,7 +112,7 @@ Prior priorFor(const lvf::apps::LocalizationConfig& config, const std::string& m
 		return p;
 	}
 	p.ownMap = lvf::apps::buildMapFromScans(run);
-	p.map->loadFromProbabilisticPosesAndObservations(*p.ownMap);
+	lvf::apps::loadSimpleMap(*p.ownMap, *p.map);
 	p.text = mrpt::format(
 		"none given: built from the run's %zu laser scans by MRPT's ICP-SLAM (%zu keyframes)", run.steps.size(),
 		p.ownMap->size());
