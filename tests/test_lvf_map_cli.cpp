@@ -8,6 +8,7 @@
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/metrics/ObstacleGridScore.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
+#include <lvfusion/metrics/ScanOnMap.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/RandomWorld.h>
@@ -115,46 +116,25 @@ Agreement compareSteps(
 	return {position[position.size() / 2], position.back(), heading[heading.size() / 2], position[position.size() * 9 / 10]};
 }
 
-/** How well each localised scan lies on the prior map: per scan, the share
- * of its returns (every other ray, within 15 m) that fall within a cell of a
- * cell the map holds more likely occupied than not. A filter that follows
- * the robot keeps most scans well above half; one that lost it, far below. */
-std::vector<double> scanAgreementWithMap(
-	const std::string& rawlog, const std::vector<lvf::metrics::StampedPose>& poses,
-	const mrpt::maps::COccupancyGridMap2D& map)
-{
-	mrpt::obs::CRawlog log;
-	EXPECT_TRUE(log.loadFromRawLogFile(rawlog));
-	std::vector<double> shares;
-	for (size_t i = 0; i < log.size() && shares.size() < poses.size(); i++)
-	{
-		if (log.getType(i) != mrpt::obs::CRawlog::etObservation) continue;
-		const auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(log.getAsObservation(i));
-		if (!scan) continue;
-		const mrpt::poses::CPose3D sensor = mrpt::poses::CPose3D(poses[shares.size()].pose) + scan->sensorPose;
-		size_t returns = 0, onMap = 0;
-		for (size_t r = 0; r < scan->getScanSize(); r += 2)
-		{
-			const double range = scan->getScanRange(r), a = scan->getScanAngle(r);
-			if (!scan->getScanRangeValidity(r) || range > 15) continue;
-			double x, y, z;
-			sensor.composePoint(range * std::cos(a), range * std::sin(a), 0, x, y, z);
-			returns++;
-			const int cx = map.x2idx(x), cy = map.y2idx(y);
-			bool hit = false;
-			for (int dx = -1; dx <= 1 && !hit; dx++)
-				for (int dy = -1; dy <= 1 && !hit; dy++)
-					hit = cx + dx >= 0 && cy + dy >= 0 && cx + dx < int(map.getSizeX()) &&
-						cy + dy < int(map.getSizeY()) && map.getCell(cx + dx, cy + dy) < 0.49f;
-			onMap += hit;
-		}
-		shares.push_back(returns ? double(onMap) / double(returns) : 1.0);
-	}
-	return shares;
-}
-
 class LvfMap : public CliTest
 {
+   protected:
+	/** A 6 m x 4 m room centred on the origin, the robot driven from (-2, -0.5)
+	 * to (2, 0.5): NAME.rawlog (observations layout) and NAME_gt_poses.txt. */
+	void simulateSmallRoom(const std::string& name)
+	{
+		write(name + ".yaml", "name: " + name + R"(
+walls:
+  - {name: south, from: [-3, -2], to: [3, -2]}
+  - {name: north, from: [-3, 2], to: [3, 2]}
+  - {name: east, from: [3, -2], to: [3, 2]}
+  - {name: west, from: [-3, -2], to: [-3, 2]}
+path:
+  waypoints: [[-2, -0.5], [2, 0.5]]
+  step: 0.25
+)");
+		ASSERT_EQ(run(kSimulate, "--world " + name + ".yaml --outdir . --format obs -q").status, 0);
+	}
 };
 }  // namespace
 
@@ -296,17 +276,7 @@ TEST_F(LvfMap, ImagePriorMapLocalisesWithinTargets)
 	// A 6 m x 4 m room centred on the origin, and its floor plan drawn as
 	// an image at 5 cm per pixel (white free, black walls), as a user would
 	// give a scanned plan.
-	write("plan_room.yaml", R"(name: plan_room
-walls:
-  - {name: south, from: [-3, -2], to: [3, -2]}
-  - {name: north, from: [-3, 2], to: [3, 2]}
-  - {name: east, from: [3, -2], to: [3, 2]}
-  - {name: west, from: [-3, -2], to: [-3, 2]}
-path:
-  waypoints: [[-2, -0.5], [2, 0.5]]
-  step: 0.25
-)");
-	ASSERT_EQ(run(kSimulate, "--world plan_room.yaml --outdir . --format obs -q").status, 0);
+	simulateSmallRoom("plan_room");
 	// 6.2 m x 4.2 m; the walls' 0.1 m (two pixels) centred on the room's sides.
 	cv::Mat1b plan(84, 124, uchar(127));
 	plan(cv::Rect(1, 1, 122, 82)) = 0;
@@ -320,12 +290,34 @@ path:
 	const auto r = run(kMap, "--input plan_room.rawlog --map plan.png --config start.ini --outdir out");
 	ASSERT_EQ(r.status, 0) << r.err;
 	EXPECT_NE(r.out.find("plan.png (image, 0.050 m per pixel, centred on the origin)"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("localised scans on the prior map: median share of their returns"), std::string::npos) << r.out;
+	EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 	const auto e = localisationError(m_dir / "out/plan_room_poses.txt", m_dir / "plan_room_gt_poses.txt");
 	std::printf("image prior map: median error %.3f m, %.2f deg over %zu poses\n", e.medianPosition,
 				mrpt::RAD2DEG(e.medianHeading), e.matched);
 	EXPECT_EQ(e.matched, 18u);
 	EXPECT_LT(e.medianPosition, 0.05);
 	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
+}
+
+TEST_F(LvfMap, AFilterThatLostTheRobotIsReported)
+{
+	// The same 6 m x 4 m room, its prior map built by lvf-map, and the
+	// particles started where the robot is not: 3 m east, 1 m north and
+	// turned 90 deg. The run still completes, but lvf-map says its poses
+	// are not to be trusted, and the simulator's truth agrees.
+	simulateSmallRoom("lost_room");
+	ASSERT_EQ(run(kMap, "--input lost_room.rawlog --outdir own -q").status, 0);
+	write("wrong.ini", "[LocalizationExperiment]\ninit_PDF_min_x = 0.8\ninit_PDF_max_x = 1.2\n"
+					   "init_PDF_min_y = 0.3\ninit_PDF_max_y = 0.7\n"
+					   "init_PDF_min_yaw_deg = 100\ninit_PDF_max_yaw_deg = 110\n");
+	const auto r = run(kMap, "--input lost_room.rawlog --map own/lost_room_prior_map.gridmap.gz --config wrong.ini --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.err.find("lvf-map: warning: most localised scans lie off the prior map"), std::string::npos) << r.err;
+	const auto e = localisationError(m_dir / "out/lost_room_poses.txt", m_dir / "lost_room_gt_poses.txt");
+	std::printf("lost filter: %s", r.err.c_str());
+	std::printf("lost filter: median error %.3f m, %.2f deg against the truth\n", e.medianPosition, mrpt::RAD2DEG(e.medianHeading));
+	EXPECT_GT(e.medianPosition, 0.5);
 }
 
 TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
@@ -444,8 +436,18 @@ TEST_F(LvfMap, FollowsTheRobotThroughAWholeRealLaserLog)
 				map.getSizeY(), map.getXMin(), map.getXMax(), map.getYMin(), map.getYMax());
 	EXPECT_GT(map.getXMin(), 500.f);
 	EXPECT_LT(map.getXMax() - map.getXMin(), 120.f);
-	auto shares = scanAgreementWithMap(log, poses, map);
+	// Each scan at its localised pose against the map (lvf::metrics::scanShareOnMap,
+	// which lvf-map also prints and warns by).
+	mrpt::obs::CRawlog rawlog;
+	ASSERT_TRUE(rawlog.loadFromRawLogFile(log));
+	std::vector<double> shares;
+	for (size_t i = 0; i < rawlog.size() && shares.size() < poses.size(); i++)
+		if (rawlog.getType(i) == mrpt::obs::CRawlog::etObservation)
+			if (const auto scan =
+					std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(rawlog.getAsObservation(i)))
+				shares.push_back(lvf::metrics::scanShareOnMap(*scan, poses[shares.size()].pose, map, 15.0));
 	ASSERT_EQ(shares.size(), 1988u);
+	EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 	const auto under = static_cast<size_t>(std::count_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }));
 	std::sort(shares.begin(), shares.end());
 	std::printf("mit-csail (1988 scans): a scan's returns on the map, median share %.3f, 10th percentile %.3f; %zu "

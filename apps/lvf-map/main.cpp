@@ -21,6 +21,7 @@
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
+#include <lvfusion/metrics/ScanOnMap.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/random/RandomGenerators.h>
@@ -28,6 +29,7 @@
 #include <mrpt/system/filesystem.h>
 #include <mrpt/system/string_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -124,23 +126,60 @@ Prior priorFor(const lvf::apps::LocalizationConfig& config, const std::string& m
 	return p;
 }
 
-/** Localises every step of the run in turn, adding its scans to `grids`
- * at the estimate; the estimates. */
-std::vector<lvf::metrics::StampedPose> localise(
-	const lvf::apps::MapRun& run, lvf::apps::ParticleLocalizer& localizer, lvf::apps::GlobalGrids& grids, bool quiet)
+/** The localised run: a pose per scan, and how well each scan lies on the
+ * prior map from there (lvf::metrics::scanShareOnMap; empty without a grid). */
+struct Localised
 {
 	std::vector<lvf::metrics::StampedPose> poses;
+	std::vector<double> sharesOnMap;
+};
+
+/** Localises every step of the run in turn, adding its scans to `grids`
+ * at the estimate. */
+Localised localise(
+	const lvf::apps::MapRun& run, lvf::apps::ParticleLocalizer& localizer, const mrpt::maps::CMultiMetricMap& prior,
+	lvf::apps::GlobalGrids& grids, bool quiet)
+{
+	Localised out;
+	const auto priorGrid = prior.mapByClass<mrpt::maps::COccupancyGridMap2D>();
 	lvf::common::ProgressBar progress("localising", run.steps.size());
 	for (size_t k = 0; k < run.steps.size(); k++)
 	{
 		const auto& step = run.steps[k];
 		const auto pose = localizer.update(step);
-		poses.push_back({k, mrpt::Clock::toDouble(step.laser->timestamp), pose});
+		out.poses.push_back({k, mrpt::Clock::toDouble(step.laser->timestamp), pose});
+		if (priorGrid)
+			out.sharesOnMap.push_back(lvf::metrics::scanShareOnMap(
+				*step.laser, pose, *priorGrid, priorGrid->insertionOptions.maxDistanceInsertion));
 		grids.add(*step.laser, step.fused.get(), pose);
 		if (!quiet) progress.update(k + 1);
 	}
 	grids.finish();
-	return poses;
+	return out;
+}
+
+/** One line on how the localised scans lie on the prior map, and a warning
+ * (also when quiet) when most lie off it: the filter has most likely lost
+ * the robot, and everything after that scan is built at wrong poses. */
+void reportScansOnMap(const std::vector<double>& shares, bool quiet)
+{
+	if (shares.empty()) return;
+	std::vector<double> sorted = shares;
+	std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+	const double median = sorted[sorted.size() / 2];
+	const size_t under = static_cast<size_t>(std::count_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }));
+	if (!quiet)
+		std::cout << mrpt::format(
+			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
+			median, under, shares.size());
+	if (2 * under > shares.size())
+	{
+		const auto first = std::find_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }) - shares.begin();
+		std::cerr << mrpt::format(
+			"%s: warning: most localised scans lie off the prior map (the first from scan %td on): the filter has "
+			"probably lost the robot; check the prior map and the initial box, or widen [DummyOdometryParams]\n",
+			kApp.c_str(), first);
+	}
 }
 
 /** Plans on each map. A start or goal the user gave must be usable (an
@@ -211,7 +250,8 @@ int run(int argc, char** argv)
 	mrpt::random::getRandomGenerator().randomize(argSeed.getValue());
 	lvf::apps::ParticleLocalizer localizer(config, prior.map, prior.initMin, prior.initMax, prior.onFreeSpace);
 	lvf::apps::GlobalGrids grids(config.globalMaps.resolution, config.globalMaps.visualMinHits);
-	const auto poses = localise(runLog, localizer, grids, quiet);
+	const auto localised = localise(runLog, localizer, *prior.map, grids, quiet);
+	const auto& poses = localised.poses;
 
 	// 3. Plan on each grid.
 	lvf::apps::Endpoints ends;
@@ -235,7 +275,11 @@ int run(int argc, char** argv)
 	lvf::apps::writeMapPlans(files, name, plans, ends, config.planner);
 	files.commit();
 
-	if (quiet) return lvf::common::kExitOk;
+	if (quiet)
+	{
+		reportScansOnMap(localised.sharesOnMap, quiet);
+		return lvf::common::kExitOk;
+	}
 	std::cout << mrpt::format(
 		"%s: %s: %zu scans (%zu with a fused scan) localised in %.2f s, %zu particles at the end\n"
 		"  prior map: %s\n",
@@ -243,6 +287,7 @@ int run(int argc, char** argv)
 		localizer.particles(), prior.text.c_str());
 	if (!runLog.fusedScans)
 		std::cout << "  no FUSED scans in the input (run lvf-fuse first for the fused map): laser-only map only\n";
+	reportScansOnMap(localised.sharesOnMap, quiet);
 	lvf::apps::printRunReport(std::cout, input, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
