@@ -176,9 +176,9 @@ void reportScansOnMap(const std::vector<double>& shares, bool quiet)
 	{
 		const auto first = std::find_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }) - shares.begin();
 		std::cerr << mrpt::format(
-			"%s: warning: most localised scans lie off the prior map (the first from scan %td on): the filter has "
-			"probably lost the robot; check the prior map and the initial box, or widen [DummyOdometryParams]\n",
-			kApp.c_str(), first);
+			"%s: warning: most localised scans lie off the prior map (%zu of %zu, the first at scan %td): the filter "
+			"has probably lost the robot; check the prior map and the initial box, or widen [DummyOdometryParams]\n",
+			kApp.c_str(), under, shares.size(), first);
 	}
 }
 
