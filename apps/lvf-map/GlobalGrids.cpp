@@ -7,6 +7,13 @@
 
 namespace lvf::apps
 {
+void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y)
+{
+	grid.setSize(
+		static_cast<float>(x - 1), static_cast<float>(x + 1), static_cast<float>(y - 1), static_cast<float>(y + 1),
+		grid.getResolution());
+}
+
 GlobalGrids::GlobalGrids(double resolution, int visualMinHits)
 	: m_laser(-1, 1, -1, 1, static_cast<float>(resolution)),
 	  m_fused(-1, 1, -1, 1, static_cast<float>(resolution)),
@@ -19,13 +26,8 @@ void GlobalGrids::add(
 	const mrpt::obs::CObservation2DRangeScan& laser, const mrpt::obs::CObservation2DRangeScan* fused,
 	const mrpt::poses::CPose2D& pose)
 {
-	// The grids start around the first pose and grow as the scans reach
-	// beyond them (odometry frames may be far from the origin).
 	if (m_laserScans == 0)
-		for (auto* g : {&m_laser, &m_fused})
-			g->setSize(
-				static_cast<float>(pose.x() - 1), static_cast<float>(pose.x() + 1), static_cast<float>(pose.y() - 1),
-				static_cast<float>(pose.y() + 1), static_cast<float>(m_resolution));
+		for (auto* g : {&m_laser, &m_fused}) startGridAround(*g, pose.x(), pose.y());
 	m_laserScans++;
 	const mrpt::poses::CPose3D robot(pose);
 	m_laser.insertObservation(laser, robot);

@@ -22,6 +22,14 @@
 
 namespace lvf::apps
 {
+/** Empties `grid` to 2 m x 2 m round (x, y), at its own resolution. MRPT's
+ * grids grow to take in what is inserted but never shrink, and a new or
+ * cleared one spans 20 m round the origin: a run whose odometry starts far
+ * from it (the Freiburg logs: mit-csail at x = 577 m) would get a grid
+ * reaching back to the origin. Grids started where the run starts cover
+ * where it went and no more. */
+void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y);
+
 class GlobalGrids
 {
    public:

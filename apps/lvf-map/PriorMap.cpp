@@ -1,5 +1,7 @@
 #include "PriorMap.h"
 
+#include "GlobalGrids.h"
+
 #include <lvfusion/common/InputError.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -74,20 +76,15 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 
 void loadSimpleMap(const mrpt::maps::CSimpleMap& simple, mrpt::maps::CMultiMetricMap& map)
 {
-	// (MRPT writes and reads no keyframe without its pose and observations.)
 	// MRPT's loadFromProbabilisticPosesAndObservations clears the map first,
-	// and a cleared COccupancyGridMap2D is 20 m x 20 m round the origin; it
-	// then grows to take in the scans but never shrinks. A log whose odometry
-	// starts far out (the Freiburg logs: mit-csail at x = 577 m) got a prior
-	// grid reaching back to the origin, 12160 x 1600 cells for a building
-	// 70 m across. So the grids start round the first keyframe, as the
-	// global grids do (GlobalGrids.cpp), and grow from there.
+	// which puts its grids round the origin (mit-csail's prior map: 12160 x
+	// 1600 cells for a building 70 m across); these start round the first
+	// keyframe (startGridAround). MRPT writes and reads no keyframe without
+	// its pose and observations.
 	map.clear();
 	const mrpt::poses::CPose3D first = simple.getAsPair(0).pose->getMeanVal();
 	for (size_t i = 0; auto grid = map.mapByClass<mrpt::maps::COccupancyGridMap2D>(i); i++)
-		grid->setSize(
-			static_cast<float>(first.x() - 1), static_cast<float>(first.x() + 1), static_cast<float>(first.y() - 1),
-			static_cast<float>(first.y() + 1), grid->getResolution());
+		startGridAround(*grid, first.x(), first.y());
 	for (const auto& keyframe : simple) keyframe.sf->insertObservationsInto(map, keyframe.pose->getMeanVal());
 }
 
