@@ -158,28 +158,32 @@ Localised localise(
 	return out;
 }
 
-/** One line on how the localised scans lie on the prior map, and a warning
- * (also when quiet) when most lie off it: the filter has most likely lost
- * the robot, and everything after that scan is built at wrong poses. */
-void reportScansOnMap(const std::vector<double>& shares, bool quiet)
+/** How the localised scans lie on the prior map: the median share of their
+ * returns on it, how many have under half, and the first of those. */
+struct ScansOnMap
 {
-	if (shares.empty()) return;
+	double median = 0;
+	size_t under = 0, total = 0;
+	std::ptrdiff_t firstUnder = -1;
+	/** Most scans lie off the map: the filter has most likely lost the
+	 * robot, and everything after that is built at wrong poses. */
+	bool lost() const { return 2 * under > total; }
+};
+
+std::optional<ScansOnMap> summariseScansOnMap(const std::vector<double>& shares)
+{
+	if (shares.empty()) return std::nullopt;
+	ScansOnMap s;
 	std::vector<double> sorted = shares;
 	std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-	const double median = sorted[sorted.size() / 2];
-	const size_t under = static_cast<size_t>(std::count_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }));
-	if (!quiet)
-		std::cout << mrpt::format(
-			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
-			median, under, shares.size());
-	if (2 * under > shares.size())
-	{
-		const auto first = std::find_if(shares.begin(), shares.end(), [](double s) { return s < 0.5; }) - shares.begin();
-		std::cerr << mrpt::format(
-			"%s: warning: most localised scans lie off the prior map (%zu of %zu, the first at scan %td): the filter "
-			"has probably lost the robot; check the prior map and the initial box, or widen [DummyOdometryParams]\n",
-			kApp.c_str(), under, shares.size(), first);
-	}
+	s.median = sorted[sorted.size() / 2];
+	s.total = shares.size();
+	for (size_t k = 0; k < shares.size(); k++)
+		if (shares[k] < 0.5)
+		{
+			if (s.under++ == 0) s.firstUnder = static_cast<std::ptrdiff_t>(k);
+		}
+	return s;
 }
 
 /** Plans on each map. A start or goal the user gave must be usable (an
@@ -275,11 +279,14 @@ int run(int argc, char** argv)
 	lvf::apps::writeMapPlans(files, name, plans, ends, config.planner);
 	files.commit();
 
-	if (quiet)
-	{
-		reportScansOnMap(localised.sharesOnMap, quiet);
-		return lvf::common::kExitOk;
-	}
+	// Told also when quiet: what was built after the filter lost the robot is wrong.
+	const auto onMap = summariseScansOnMap(localised.sharesOnMap);
+	if (onMap && onMap->lost())
+		std::cerr << mrpt::format(
+			"%s: warning: most localised scans lie off the prior map (%zu of %zu, the first at scan %td): the filter "
+			"has probably lost the robot; check the prior map and the initial box, or widen [DummyOdometryParams]\n",
+			kApp.c_str(), onMap->under, onMap->total, onMap->firstUnder);
+	if (quiet) return lvf::common::kExitOk;
 	std::cout << mrpt::format(
 		"%s: %s: %zu scans (%zu with a fused scan) localised in %.2f s, %zu particles at the end\n"
 		"  prior map: %s\n",
@@ -287,7 +294,10 @@ int run(int argc, char** argv)
 		localizer.particles(), prior.text.c_str());
 	if (!runLog.fusedScans)
 		std::cout << "  no FUSED scans in the input (run lvf-fuse first for the fused map): laser-only map only\n";
-	reportScansOnMap(localised.sharesOnMap, quiet);
+	if (onMap)
+		std::cout << mrpt::format(
+			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
+			onMap->median, onMap->under, onMap->total);
 	lvf::apps::printRunReport(std::cout, input, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
