@@ -86,8 +86,8 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchCoarseToFine(
 	scores.compute(lineNear, lineFar);
 	const auto [flankLo, flankHi] = scores.flanks(bestXc, lineNear, lineFar);
 	std::vector<int> rivals;  // full-resolution column estimates
-	scores.forEachPeakAbove(lineNear, lineFar, bestC - kCoarseRivalMargin, [&](int x) {
-		if (x < flankLo || x > flankHi) rivals.push_back(fullColumn(x));
+	scores.forEachPeakAbove(lineNear, lineFar, bestC - kCoarseRivalMargin, [&, lo = flankLo, hi = flankHi](int x) {
+		if (x < lo || x > hi) rivals.push_back(fullColumn(x));
 	});
 	if (m_options.leftRightCheck && !findsItsWayBack(coarse, uc, vc, bestXc, lineNear, lineFar))
 	{

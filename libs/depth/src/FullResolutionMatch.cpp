@@ -181,7 +181,7 @@ FocusedEpipolarSearch::Match FocusedEpipolarSearch::matchAtFullResolution(
 	scores.forEachPeakAbove(
 		std::max(xFirst - context, scores.firstColumn()) + 1, std::min(xLast + context, scores.lastColumn()) - 1,
 		best - m_options.uniquenessMargin,
-		[&](int x) { rival |= std::abs(x - bestX) > 1; });
+		[&, bestColumn = bestX](int x) { rival |= std::abs(x - bestColumn) > 1; });
 	if (rival)
 	{
 		m.outcome = SearchOutcome::Ambiguous;
