@@ -3,10 +3,14 @@
 // nobody reads is refused.
 
 #include <gtest/gtest.h>
+#include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <mrpt/config/CConfigFileMemory.h>
+
+#include <cstdio>
+#include <fstream>
 
 namespace
 {
@@ -68,4 +72,32 @@ TEST(Options, UnknownKeyIsRefusedWithItsName)
 	{
 		EXPECT_STREQ(e.what(), "<memory>: [CLaserStereoFusion] robot_hieght: unknown key");
 	}
+}
+
+// Found by tests/fuzz/fuzz_ini_options: MRPT's own INI preprocessor refuses
+// an undefined ${name}; its exception (a banner, the message, a call stack)
+// reached the apps as "internal error: MRPT exception ====", status 1.
+TEST(Options, AFileMrptsPreprocessorRefusesIsAnInputErrorWithItsLine)
+{
+	const std::string path = ::testing::TempDir() + "undefined_variable.ini";
+	std::ofstream(path) << "[CLaserStereoFusion]\nrobot_height = ${NOT_DEFINED}\n";
+	try
+	{
+		lvf::common::openIniFile(path);
+		FAIL() << "no error";
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		EXPECT_EQ(std::string(e.what()), path + ": Line 2: Unknown variable `${NOT_DEFINED}`");
+	}
+	std::remove(path.c_str());
+}
+
+TEST(Options, AnMrptExceptionsMessageIsItsLineWithoutBannerOrCallStack)
+{
+	const std::runtime_error mrpt("==== MRPT exception ====\nLine 2: Unknown variable\nCall stack backtrace:\n[0 ] 0x1\n");
+	EXPECT_EQ(lvf::common::exceptionMessage(mrpt), "Line 2: Unknown variable");
+	const std::runtime_error labelled("==== MRPT exception ====\nfile.cpp:10: Message: bad value\nmore\n");
+	EXPECT_EQ(lvf::common::exceptionMessage(labelled), "bad value");
+	EXPECT_EQ(lvf::common::exceptionMessage(std::runtime_error("plain")), "plain");
 }

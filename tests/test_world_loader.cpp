@@ -76,7 +76,7 @@ TEST(WorldLoader, EveryMistakeIsNamedWithFileLineAndKey)
 {
 	EXPECT_EQ(
 		errorOf("boxes:\n  - {pose: [0, 0, 0], size: [1, -1, 1]}\n" + kPath),
-		"bad.yaml: line 2: boxes[0].size[1]: -1 is out of range [1e-06, 1e+300]");
+		"bad.yaml: line 2: boxes[0].size[1]: -1 is out of range [1e-06, 100]");
 	EXPECT_EQ(
 		errorOf("boxes:\n  - {pose: [0, 0, 0], size: [1, 1, 1], colour: red}\n" + kPath),
 		"bad.yaml: line 2: boxes[0].colour: unknown key 'colour'");
@@ -89,6 +89,37 @@ TEST(WorldLoader, EveryMistakeIsNamedWithFileLineAndKey)
 		"bad.yaml: line 1: tables[0].height: expected a number");
 	EXPECT_EQ(errorOf("floor: {texture: marble}\n" + kPath),
 		"bad.yaml: line 1: floor.texture: unknown texture 'marble' (none, noise, checker)");
+}
+
+// Found by tests/fuzz/fuzz_world_file: well-formed YAML whose key is no
+// single value (here a list, or an anchor on a key) escaped as yaml-cpp's
+// own exception, which the apps report as an internal error (status 1).
+TEST(WorldLoader, AKeyThatIsNoSingleValueIsNamedWithItsLine)
+{
+	EXPECT_EQ(errorOf("boxes: []\n[a, b]: 1\n" + kPath), "bad.yaml: line 2: unexpected value: bad conversion");
+	EXPECT_EQ(errorOf("walls:\n  - {name: w, &rom: [-1, 1.2], to: [10, 1.2]}\n" + kPath),
+		"bad.yaml: line 2: unexpected value: bad conversion");
+}
+
+// Found by tests/fuzz/fuzz_world_file: a coordinate mistyped by orders of
+// magnitude (a box 100 km out made lvf-simulate fail writing its ground-truth
+// grid, 10,000 km out crash; a waypoint 1e46 m out sampled poses until memory
+// ran out). A world is a building: 200 m of its origin, sides up to 100 m,
+// paths up to 100,000 poses.
+TEST(WorldLoader, AWorldBeyondABuildingsSizeIsRefusedBeforeAnythingIsBuilt)
+{
+	EXPECT_EQ(errorOf("boxes:\n  - {pose: [100000, 0, 0], size: [1, 1, 1]}\n" + kPath),
+		"bad.yaml: line 2: boxes[0].pose[0]: 100000 is out of range [-200, 200]");
+	EXPECT_EQ(errorOf("boxes:\n  - {pose: [0, 0, 0], size: [1, 1e9, 1]}\n" + kPath),
+		"bad.yaml: line 2: boxes[0].size[1]: 1e+09 is out of range [1e-06, 100]");
+	EXPECT_EQ(errorOf("path:\n  waypoints: [[0, 0], [1e46, 0.8]]\n"),
+		"bad.yaml: line 2: path.waypoints[1][0]: 1e+46 is out of range [-200, 200]");
+	EXPECT_EQ(errorOf("path:\n  waypoints: [[0, 0], [150, 0], [0, 0]]\n  step: 0.001\n"),
+		"bad.yaml: line 2: path: 300 m of waypoints in steps of 0.001 m are more than 100000 poses");
+	EXPECT_EQ(errorOf("walls:\n  - {from: [0, -250], to: [0, 5]}\n" + kPath),
+		"bad.yaml: line 2: walls[0].from[1]: -250 is out of range [-200, 200]");
+	EXPECT_EQ(errorOf("path: {poses: [[0, 0, 0]]}\ntarget: [0, 201]\n"),
+		"bad.yaml: line 2: target[1]: 201 is out of range [-200, 200]");
 }
 
 TEST(WorldLoader, MissingFileIsAnInputError)

@@ -9,23 +9,6 @@
 
 namespace lvf::common
 {
-namespace
-{
-/** The line that says what went wrong: an MRPT exception's text opens
- * with a "==== MRPT exception ====" banner, then "Message: ...", then
- * where and a call stack. */
-std::string firstLine(const std::string& s)
-{
-	const std::string label = "Message:";
-	const auto message = s.find(label);
-	const auto start = message != std::string::npos ? s.find_first_not_of(' ', message + label.size())
-													: s.find_first_not_of("\n =");
-	const auto from = start == std::string::npos ? 0 : start;
-	const auto end = s.find('\n', from);
-	return s.substr(from, end == std::string::npos ? std::string::npos : end - from);
-}
-}  // namespace
-
 int runApp(const std::string& appName, const std::function<int()>& body)
 {
 	retainLargeAllocations();  // every app handles frame after frame
@@ -40,7 +23,7 @@ int runApp(const std::string& appName, const std::function<int()>& body)
 	}
 	catch (const std::exception& e)
 	{
-		std::cerr << appName << ": internal error: " << firstLine(e.what())
+		std::cerr << appName << ": internal error: " << exceptionMessage(e)
 				  << std::endl;
 		return kExitInternalError;
 	}

@@ -45,7 +45,16 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 		if (!inSection)
 			throw InputError(path, where, "key outside of any [section]");
 	}
-	return std::make_unique<mrpt::config::CConfigFile>(path);
+	try
+	{
+		return std::make_unique<mrpt::config::CConfigFile>(path);
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's own preprocessing (@define, ${name}, $env{}, $eval{})
+		// refuses the file: its message names the line.
+		throw InputError(path, "", exceptionMessage(e));
+	}
 }
 
 IniSection::IniSection(

@@ -41,4 +41,19 @@ void requireInputFile(const std::string& path, const std::string& what)
 	if (!std::ifstream(path)) throw InputError(path, "", std::string("cannot read it: ") + std::strerror(errno));
 }
 
+std::string exceptionMessage(const std::exception& e)
+{
+	const std::string s = e.what();
+	const std::string label = "Message:", banner = "==== MRPT exception ====";
+	size_t from = 0;
+	if (const auto message = s.find(label); message != std::string::npos)
+		from = message + label.size();
+	else if (s.rfind(banner, 0) == 0)
+		from = banner.size();
+	from = s.find_first_not_of(" \n", from);
+	if (from == std::string::npos) return s;
+	const auto end = s.find('\n', from);
+	return s.substr(from, end == std::string::npos ? std::string::npos : end - from);
+}
+
 }  // namespace lvf::common

@@ -1,6 +1,7 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/core/bits_math.h>
+#include <mrpt/core/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -14,6 +15,16 @@ using lvf::common::InputError;
 
 namespace
 {
+// A world is a building: everything within this of its origin [m]. The
+// simulator rasterises the whole world at 5 cm for its ground truth
+// (obstacleGrid), some 10,000 x 10,000 cells at most; a coordinate mistyped by
+// orders of magnitude would otherwise ask for terabytes (a box 100 km out
+// failed writing, 10,000 km out crashed: found by tests/fuzz).
+constexpr double kMaxCoordinate = 200;
+constexpr double kMaxSize = 100;  // largest side of an element [m]
+
+constexpr size_t kMaxPathPoses = 100000;  // a path sampled from waypoints
+
 /** One YAML node plus where it came from, for messages like
  * "world.yaml: line 12: boxes[2].size: ...". */
 class Field
@@ -88,12 +99,20 @@ class Field
 	{
 		return has(key) ? (*this)[key].number(minValue, maxValue) : defaultValue;
 	}
-	std::vector<double> numbers(size_t count, double minValue = -1e300) const
+	std::vector<double> numbers(size_t count, double minValue = -1e300, double maxValue = 1e300) const
 	{
 		if (!m_node.IsSequence() || m_node.size() != count)
 			fail("expected a list of " + std::to_string(count) + " numbers");
 		std::vector<double> out;
-		for (size_t i = 0; i < count; i++) out.push_back(item(i).number(minValue));
+		for (size_t i = 0; i < count; i++) out.push_back(item(i).number(minValue, maxValue));
+		return out;
+	}
+	/** [x, y] or [x, y, yaw_deg]: x and y within kMaxCoordinate of the
+	 * origin, an angle any number of degrees. */
+	std::vector<double> position(size_t count) const
+	{
+		std::vector<double> out = numbers(count);
+		for (size_t i = 0; i < 2 && i < count; i++) item(i).number(-kMaxCoordinate, kMaxCoordinate);
 		return out;
 	}
 
@@ -139,7 +158,7 @@ class WorldParser
 		parsePath(top["path"], w);
 		if (top.has("target"))
 		{
-			const auto t = top["target"].numbers(2);
+			const auto t = top["target"].position(2);
 			w.target = mrpt::math::TPoint2D(t[0], t[1]);
 		}
 		return w;
@@ -222,7 +241,7 @@ class WorldParser
 	/** pose: [x, y, yaw_deg] */
 	static void readPose(const Field& f, Box& b)
 	{
-		const auto p = f["pose"].numbers(3);
+		const auto p = f["pose"].position(3);
 		b.x = p[0];
 		b.y = p[1];
 		b.yaw = mrpt::DEG2RAD(p[2]);
@@ -231,7 +250,7 @@ class WorldParser
 	void parseWall(const Field& f, World& w)
 	{
 		f.requireMap({"name", "from", "to", "thickness", "height", "elevation", "texture"});
-		const auto a = f["from"].numbers(2), b = f["to"].numbers(2);
+		const auto a = f["from"].position(2), b = f["to"].position(2);
 		Box box;
 		box.name = nameOf(f, "wall", m_walls++);
 		box.sizeX = std::hypot(b[0] - a[0], b[1] - a[1]);
@@ -252,7 +271,7 @@ class WorldParser
 		Box box;
 		box.name = nameOf(f, "box", m_boxCount++);
 		readPose(f, box);
-		const auto s = f["size"].numbers(3, kPositive);
+		const auto s = f["size"].numbers(3, kPositive, kMaxSize);
 		box.sizeX = s[0];
 		box.sizeY = s[1];
 		box.sizeZ = s[2];
@@ -268,7 +287,7 @@ class WorldParser
 		Box top;
 		top.name = nameOf(f, "table", m_tables++);
 		readPose(f, top);
-		const auto s = f["size"].numbers(2, kPositive);
+		const auto s = f["size"].numbers(2, kPositive, kMaxSize);
 		const double height = f.number("height", 0.75, kPositive, 10);
 		const double thickness = f.number("top_thickness", 0.04, kPositive, height);
 		const double leg = f.number(
@@ -305,7 +324,7 @@ class WorldParser
 		Box frame;
 		frame.name = nameOf(f, "shelf", m_shelves++);
 		readPose(f, frame);
-		const auto s = f["size"].numbers(3, kPositive);
+		const auto s = f["size"].numbers(3, kPositive, kMaxSize);
 		frame.elevation = f.number("elevation", 0, 0, 100);
 		const int boards = static_cast<int>(f.number("boards", 4, 1, 100));
 		const double boardT = f.number("board_thickness", 0.02, kPositive, s[2] / boards);
@@ -348,7 +367,7 @@ class WorldParser
 			const Field list = f["poses"];
 			for (size_t i = 0; i < list.sequenceSize(); i++)
 			{
-				const auto p = list.item(i).numbers(3);
+				const auto p = list.item(i).position(3);
 				w.path.emplace_back(p[0], p[1], mrpt::DEG2RAD(p[2]));
 			}
 		}
@@ -359,10 +378,14 @@ class WorldParser
 			std::vector<mrpt::math::TPoint2D> points;
 			for (size_t i = 0; i < list.sequenceSize(); i++)
 			{
-				const auto p = list.item(i).numbers(2);
+				const auto p = list.item(i).position(2);
 				points.emplace_back(p[0], p[1]);
 			}
 			if (points.size() < 2) list.fail("needs at least two waypoints");
+			double length = 0;
+			for (size_t i = 0; i + 1 < points.size(); i++) length += (points[i + 1] - points[i]).norm();
+			if (length / step > double(kMaxPathPoses))
+				f.fail(mrpt::format("%.0f m of waypoints in steps of %g m are more than %zu poses", length, step, kMaxPathPoses));
 			w.path = samplePolyline(points, step);
 		}
 		if (w.path.empty()) f.fail("the path has no poses");
@@ -403,6 +426,15 @@ std::vector<mrpt::math::TPose2D> samplePolyline(
 	return poses;
 }
 
+namespace
+{
+/** "line N" where yaml-cpp knows it. */
+std::string yamlPlace(const YAML::Exception& e)
+{
+	return e.mark.is_null() ? std::string() : "line " + std::to_string(e.mark.line + 1);
+}
+}  // namespace
+
 World parseWorld(const std::string& yamlText, const std::string& sourceName)
 {
 	YAML::Node root;
@@ -413,10 +445,20 @@ World parseWorld(const std::string& yamlText, const std::string& sourceName)
 	catch (const YAML::Exception& e)
 	{
 		throw InputError(
-			sourceName, "line " + std::to_string(e.mark.line + 1),
-			"malformed YAML: " + e.msg);
+			sourceName, yamlPlace(e), "malformed YAML: " + e.msg);
 	}
-	return WorldParser(sourceName).parse(root);
+	try
+	{
+		return WorldParser(sourceName).parse(root);
+	}
+	catch (const YAML::Exception& e)
+	{
+		// Well-formed YAML whose parts are not what they should be where
+		// Field does not check first (a key that is a list or an alias,
+		// say): yaml-cpp's conversions throw, with the place.
+		throw InputError(
+			sourceName, yamlPlace(e), "unexpected value: " + e.msg);
+	}
 }
 
 World loadWorldFile(const std::string& path)

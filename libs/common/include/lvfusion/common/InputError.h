@@ -30,4 +30,9 @@ class InputError : public std::runtime_error
  * look like an empty file.) */
 void requireInputFile(const std::string& path, const std::string& what);
 
+/** The line of an exception's text that says what went wrong. MRPT's
+ * exceptions open with a "==== MRPT exception ====" banner and end with a
+ * call stack; some put the message after "Message:". */
+std::string exceptionMessage(const std::exception& e);
+
 }  // namespace lvf::common
