@@ -8,7 +8,6 @@
 #include <lvfusion/common/InputError.h>
 
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <fstream>

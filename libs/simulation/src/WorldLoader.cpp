@@ -86,13 +86,18 @@ class Field
 		if (!m_node.IsScalar() || !YAML::convert<double>::decode(m_node, v) ||
 			!std::isfinite(v))
 			fail("expected a number");
+		requireWithin(v, minValue, maxValue);
+		return v;
+	}
+	/** `v`, this node's number, must lie in [minValue, maxValue]. */
+	void requireWithin(double v, double minValue, double maxValue) const
+	{
 		if (v < minValue || v > maxValue)
 		{
 			std::ostringstream s;
 			s << v << " is out of range [" << minValue << ", " << maxValue << "]";
 			fail(s.str());
 		}
-		return v;
 	}
 	double number(const std::string& key, double defaultValue,
 		double minValue = -1e300, double maxValue = 1e300) const
@@ -111,8 +116,8 @@ class Field
 	 * origin, an angle any number of degrees. */
 	std::vector<double> position(size_t count) const
 	{
-		std::vector<double> out = numbers(count);
-		for (size_t i = 0; i < 2 && i < count; i++) item(i).number(-kMaxCoordinate, kMaxCoordinate);
+		const std::vector<double> out = numbers(count);
+		for (size_t i = 0; i < 2 && i < count; i++) item(i).requireWithin(out[i], -kMaxCoordinate, kMaxCoordinate);
 		return out;
 	}
 
