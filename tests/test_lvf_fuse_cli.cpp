@@ -266,7 +266,7 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 {
 	// Frame k is spoiled in way k; frame 0 and the last one are good.
-	const auto log = writeLog("spoilt.rawlog", 11, [](size_t k, CStereoLaserSimulator::Frame& f) {
+	const auto log = writeLog("spoilt.rawlog", 13, [](size_t k, CStereoLaserSimulator::Frame& f) {
 		auto& s = *f.stereo;
 		auto& scan = *f.scan;
 		switch (k)
@@ -291,6 +291,8 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 				s.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(0.5, 0, 0, 0, 0, 0));
 				break;
 			case 9: s.leftCamera.distortion = mrpt::img::DistortionModel::kannala_brandt; break;
+			case 10: s.rightCameraPose.m_quat.r(5.0); break;  // MRPT would throw converting it
+			case 11: s.cameraPose.x(std::numeric_limits<double>::quiet_NaN()); break;
 			default: break;
 		}
 	});
@@ -308,14 +310,16 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"frame 8: the images contradict the laser model (too little floor in view to judge, ",
 		"frame 9: left camera: fish-eye (kannala_brandt) distortion is not supported: give images rectified by "
 		"cv::fisheye, or a plumb_bob calibration (laser only)",
+		"frame 10: rightCameraPose: quaternion is not a rotation (squared norm 25): (x y z qr qx qy qz) = (0.12 0 0 5 0 0 0) (laser only)",
+		"frame 11: cameraPose: not a finite pose: (x y z qr qx qy qz) = (nan ",
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
 	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
-	EXPECT_NE(r.out.find("11 fused frames"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("13 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
-	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 11);
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 13);
 }
 
 TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)

@@ -53,6 +53,26 @@ void loadIfExternal(const mrpt::img::CImage& image, const std::string& record, c
 	}
 }
 
+/** A pose as stored in the record, checked before MRPT converts it: MRPT
+ * throws its own exception (an "internal error" to the user) on a
+ * quaternion that is not a rotation, and passes NaN through silently. */
+mrpt::poses::CPose3D storedPose(
+	const mrpt::math::TPose3DQuat& p, const std::string& record, const std::string& field)
+{
+	const auto asText = [&] {
+		return mrpt::format("(x y z qr qx qy qz) = (%g %g %g %g %g %g %g)", p.x, p.y, p.z, p.qr, p.qx, p.qy, p.qz);
+	};
+	for (int i = 0; i < 7; i++)
+		if (!std::isfinite(p[i])) throw InputError(record, field, "not a finite pose: " + asText());
+	// MRPT renormalises rounding drift itself; a squared norm 1e-3 off is
+	// far beyond rounding yet not what any stored rotation carries.
+	const double squaredNorm = p.qr * p.qr + p.qx * p.qx + p.qy * p.qy + p.qz * p.qz;
+	if (!(std::abs(squaredNorm - 1.0) < 1e-3))
+		throw InputError(record, field,
+			mrpt::format("quaternion is not a rotation (squared norm %g): ", squaredNorm) + asText());
+	return mrpt::poses::CPose3D(mrpt::poses::CPose3DQuat(p));
+}
+
 }  // namespace
 
 cv::Mat1b toGrey(const mrpt::img::CImage& image)
@@ -89,14 +109,14 @@ void RectifiedStereo::prepare(
 					" pixels, but the calibration says " + std::to_string(cam->ncols) +
 					"x" + std::to_string(cam->nrows));
 	}
-	const mrpt::poses::CPose3D right(calib.rightCameraPose);
+	const mrpt::poses::CPose3D right = storedPose(calib.rightCameraPose, record, "rightCameraPose");
 	const double baseline = right.translation().norm();
 	if (!(baseline > 1e-6 && right.x() > 0))
 		throw InputError(record, "rightCameraPose",
 			"the right camera must be to the right of the left one (x > 0), got x = " +
 				std::to_string(right.x()));
 
-	const mrpt::poses::CPose3D cameraPose(obs.cameraPose);
+	const mrpt::poses::CPose3D cameraPose = storedPose(obs.cameraPose.asTPose(), record, "cameraPose");
 	if (m_prepared && calibrationKey(calib, cameraPose) == calibrationKey(m_calibration, m_cameraPose))
 		return;
 	m_calibration = calib;
