@@ -148,6 +148,56 @@ TEST_F(LvfNavigateCli, DumpConfigIsCompleteAndReadsBack)
 	expectBadInput("--config '" + badSim.string() + "'", "badsim.ini: [SimulatedLaser] no_such_key");
 }
 
+TEST_F(LvfNavigateCli, ANavigatorConfigMrptRefusesIsOneLineNamingTheFile)
+{
+	// MRPT's navigator checks these itself, by exceptions of its own: each
+	// is one line naming the file, status 2, nothing written. The first
+	// three fail as MRPT loads the file, the last two only where it builds
+	// its PTGs' tables, at the start of a run.
+	const std::string shipped = lvf::test::slurp(std::string(LVF_SHARE_DIR) + "/config/navigate.ini");
+	const struct
+	{
+		std::string from, to, mentions;
+	} cases[] = {
+		{"PTG_COUNT = 3", "PTG_COUNT = three", "nPTGs != 0"},
+		{"PTG0_Type = CPTG_DiffDrive_C", "PTG0_Type = CPTG_Nope", "No PTG named `CPTG_Nope`"},
+		{"PTG_COUNT = 3", "PTG_COUNT = 4", "'PTG3_Type' not found"},
+		{"PTG0_resolution = 0.05", "PTG0_resolution = 0", "m_resolution > 0"},
+		{"PTG0_refDistance = 4.0", "PTG0_refDistance = -4", "refDistance > 0"},
+	};
+	for (const auto& c : cases)
+	{
+		std::string text = shipped;
+		const auto at = text.find(c.from);
+		ASSERT_NE(at, std::string::npos) << c.from;
+		text.replace(at, c.from.size(), c.to);
+		const auto ini = write("nav.ini", text);
+		expectBadInput("--config '" + ini.string() + "' --sensing laser",
+			"nav.ini: MRPT's reactive navigator refuses it: ");
+		expectBadInput("--config '" + ini.string() + "' --sensing laser", c.mentions);
+	}
+}
+
+TEST_F(LvfNavigateCli, ANavigatorThatFailsWithinItsStepEndsTheRunAtOnce)
+{
+	// A score formula that does not compile: MRPT finds it only in its
+	// navigation step and stops as in an emergency, every step again;
+	// replanning cannot mend it, so the run ends there (not at the
+	// timeout) with MRPT's reason.
+	std::string text = lvf::test::slurp(std::string(LVF_SHARE_DIR) + "/config/navigate.ini");
+	const auto formula = text.find("scalar_score_formula = ");
+	ASSERT_NE(formula, std::string::npos);
+	text.replace(formula, text.find('\n', formula) - formula, "scalar_score_formula = target_distance*(");
+	const auto ini = write("formula.ini", text);
+	const auto r = navigate("--config '" + ini.string() + "' --sensing laser --timeout 30 -q -o out");
+	EXPECT_EQ(r.status, 3) << r.out << r.err;
+	EXPECT_NE(r.out.find("outcome=navigator-error"), std::string::npos) << r.out;
+	const std::string detail = lvf::test::slurp(m_dir / "out" / "box_room_metrics.txt");
+	EXPECT_NE(detail.find("the navigator failed after "), std::string::npos) << detail;
+	EXPECT_NE(detail.find("Mismatched brackets"), std::string::npos) << detail;
+	EXPECT_EQ(r.out.find("time=30.0s"), std::string::npos) << r.out;
+}
+
 TEST_F(LvfNavigateCli, UnreachableTargetIsReportedAsSuch)
 {
 	// A closed, empty 6 x 6 m room and a target 3 m beyond its east wall:

@@ -245,6 +245,7 @@ int run(int argc, char** argv)
 	const auto navConfig = lvf::common::openIniFile(argConfig.getValue());
 	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
 	setup.navigatorConfig = readText(argConfig.getValue());
+	setup.navigatorConfigSource = argConfig.getValue();
 	{
 		// MRPT's navigator loads [CHolonomicVFH] itself and turns a bad key
 		// into an internal error: check the section here, naming the file.
@@ -270,6 +271,7 @@ int run(int argc, char** argv)
 		? navConfig->read_string("CAbstractPTGBasedReactive", "holonomic_method", "CHolonomicND")
 		: argMethod.getValue();
 	nav::requireHolonomicMethod(method, argMethod.getValue().empty() ? argConfig.getValue() : "--method");
+	nav::requireNavigatorAccepts(setup.navigatorConfig, method, argConfig.getValue());
 	setup.method = method;
 	if (argDumpConfig.getValue())
 	{

@@ -101,11 +101,19 @@ ClosedLoop::ClosedLoop(
 	quietNavigator(m_navigator);
 	m_navigator.setLogFileDirectory(setup.navigatorLogDir);
 	m_navigator.enableLogFile(!setup.navigatorLogDir.empty());
-	m_navigator.loadConfigFile(config);
-	// Not read from the INI by MRPT 2.5: set after loading.
-	m_navigator.params_abstract_ptg_navigator.ptg_cache_files_directory = setup.ptgCacheDir;
-	m_navigator.changeRobotShape(robotShape(scenario.world.robot.radius));
-	m_navigator.initialize();
+	try
+	{
+		m_navigator.loadConfigFile(config);
+		// Not read from the INI by MRPT 2.5: set after loading.
+		m_navigator.params_abstract_ptg_navigator.ptg_cache_files_directory = setup.ptgCacheDir;
+		m_navigator.changeRobotShape(robotShape(scenario.world.robot.radius));
+		// Builds the PTGs' tables, where MRPT asserts on their parameters.
+		m_navigator.initialize();
+	}
+	catch (const std::exception& e)
+	{
+		throw navigatorRefuses(setup.navigatorConfigSource, e);
+	}
 
 	m_guidance.robotRadius = scenario.world.robot.radius;
 	m_guidance.clearance = m_loop.guidanceClearance;
@@ -328,9 +336,32 @@ bool ClosedLoop::judgeMove()
 	return true;
 }
 
+namespace
+{
+/** MRPT's navigator catches the exceptions of its own step (a
+ * configuration only checked then, such as a scalar_score_formula that
+ * does not compile) and stops as in an emergency: no replanning mends
+ * that, every step would fail the same way. MRPT 2.5 keeps the reason
+ * while a new navigate() call (the plan's next subgoal) sets the state
+ * back to NAVIGATING, so the reason is what tells. */
+bool failedWithin(const mrpt::nav::CAbstractNavigator::TErrorReason& reason)
+{
+	return reason.error_code == mrpt::nav::CAbstractNavigator::TErrorCode::ERR_EMERGENCY_STOP &&
+		reason.error_msg.find("exception") != std::string::npos;
+}
+}  // namespace
+
 bool ClosedLoop::navigatorGoesOn()
 {
 	auto& m = m_metrics;
+	const auto& reason = m_navigator.getErrorReason();
+	if (failedWithin(reason))
+	{
+		m.outcome = Outcome::NavigatorError;
+		m.detail = mrpt::format("the navigator failed after %.1f s: %s", m.time,
+			lvf::common::exceptionMessage(std::runtime_error(reason.error_msg)).c_str());
+		return false;
+	}
 	const auto state = m_navigator.getCurrentState();
 	if (state != mrpt::nav::CAbstractNavigator::NAV_ERROR && state != mrpt::nav::CAbstractNavigator::IDLE)
 		return true;
@@ -341,10 +372,9 @@ bool ClosedLoop::navigatorGoesOn()
 		return true;
 	}
 	m.outcome = Outcome::NavigatorError;
-	const auto& why = m_navigator.getErrorReason().error_msg;
 	m.detail = mrpt::format(
 		"the navigator stopped %.2f m from the target after %.1f s: %s", m.finalDistance, m.time,
-		why.empty() ? "(no reason given)" : why.c_str());
+		reason.error_msg.empty() ? "(no reason given)" : reason.error_msg.c_str());
 	return false;
 }
 

@@ -9,20 +9,31 @@ namespace lvf::navigation
 {
 namespace
 {
+/** A navigator that never runs, for reading configurations with: MRPT's
+ * navigator needs a robot to exist. */
+struct ScratchNavigator
+{
+	mrpt::kinematics::CVehicleSimul_DiffDriven vehicle;
+	const LocalObstacleGrid grid{-1, 1, -1, 1, 0.5, 0.45};
+	SimulatedRobotInterface robot{vehicle, grid, 1.0};
+	mrpt::nav::CReactiveNavigationSystem navigator{robot, false, false};
+
+	/** Loads `config` with `method` as the holonomic method. */
+	ScratchNavigator(const std::string& config, const std::string& method)
+	{
+		quietNavigator(navigator);
+		mrpt::config::CConfigFileMemory in(config);
+		in.write("CAbstractPTGBasedReactive", "holonomic_method", method);
+		navigator.loadConfigFile(in);
+	}
+};
+
 /** What MRPT's navigator writes after loading `config` with `method`. */
 std::string savedByMrpt(const std::string& config, const std::string& method)
 {
-	// A navigator needs a robot to exist; it never runs here.
-	mrpt::kinematics::CVehicleSimul_DiffDriven vehicle;
-	const LocalObstacleGrid grid(-1, 1, -1, 1, 0.5, 0.45);
-	SimulatedRobotInterface robot(vehicle, grid, 1.0);
-	mrpt::nav::CReactiveNavigationSystem navigator(robot, false, false);
-	quietNavigator(navigator);
-	mrpt::config::CConfigFileMemory in(config);
-	in.write("CAbstractPTGBasedReactive", "holonomic_method", method);
-	navigator.loadConfigFile(in);
+	ScratchNavigator scratch(config, method);
 	mrpt::config::CConfigFileMemory out;
-	navigator.saveConfigFile(out);
+	scratch.navigator.saveConfigFile(out);
 	return out.getContent();
 }
 
@@ -50,6 +61,24 @@ void quietNavigator(mrpt::nav::CAbstractNavigator& navigator)
 	// its statistics to stdout when the navigator is destroyed; the object
 	// itself is not const, so the cast is well defined.
 	const_cast<mrpt::system::CTimeLogger&>(navigator.getDelaysTimeLogger()).enable(false);
+}
+
+void requireNavigatorAccepts(const std::string& navigatorConfig, const std::string& holonomicMethod,
+	const std::string& source)
+{
+	try
+	{
+		ScratchNavigator scratch(navigatorConfig, holonomicMethod);
+	}
+	catch (const std::exception& e)
+	{
+		throw navigatorRefuses(source, e);
+	}
+}
+
+lvf::common::InputError navigatorRefuses(const std::string& source, const std::exception& e)
+{
+	return lvf::common::InputError(source, "", "MRPT's reactive navigator refuses it: " + lvf::common::exceptionMessage(e));
 }
 
 std::string completeNavigatorConfig(const std::string& navigatorConfig, const std::string& holonomicMethod)

@@ -43,6 +43,8 @@ struct NavigationSetup
 	Sensing sensing = Sensing::Fused;
 	/** MRPT reactive navigation INI text (PTGs, method parameters...). */
 	std::string navigatorConfig;
+	/** Where navigatorConfig came from, for error messages. */
+	std::string navigatorConfigSource = "navigator configuration";
 	NavigationLoopOptions loop;
 	lvf::simulation::CStereoLaserSimulator::TOptions sensors;
 	lvf::fusion::CLaserStereoFusion::TOptions fusion;
