@@ -481,6 +481,10 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 	write("key.ini", "[PF_options]\nBETTA = 0.5\n");
 	write("section.ini", "[ParticleFilter]\nBETA = 0.5\n");
 	write("number.ini", "[LocalizationExperiment]\nparticles_count = many\n");
+	// Choices MRPT reads as plain numbers and refuses only in the run.
+	write("algorithm.ini", "[PF_options]\nPF_algorithm = 7\n");
+	write("resampling.ini", "[PF_options]\nresamplingMethod = 2\n");
+	write("cell.ini", "[MetricMap_occupancyGrid_00_creationOpts]\nresolution = 0\n");
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
 		{"--input " + sample + " --map prior", "prior: no file extension to tell the map format"},
@@ -495,6 +499,10 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --config key.ini", "key.ini: [PF_options] BETTA: unknown key"},
 		{"--input " + sample + " --config section.ini", "section.ini: [ParticleFilter]: unknown section"},
 		{"--input " + sample + " --config number.ini", "number.ini: [LocalizationExperiment] particles_count"},
+		{"--input " + sample + " --config algorithm.ini", "algorithm.ini: [PF_options] PF_algorithm: 7 is out of range [0, 3]"},
+		{"--input " + sample + " --config resampling.ini",
+			"resampling.ini: [PF_options] resamplingMethod: must be 0 (multinomial) with adaptiveSampleSize = 1"},
+		{"--input " + sample + " --config cell.ini", "cell.ini: [MetricMap]: MRPT cannot build the map it describes: ASSERT_GT_(res"},
 	};
 	for (const auto& [args, message] : cases)
 	{

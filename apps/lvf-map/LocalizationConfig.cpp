@@ -2,6 +2,7 @@
 
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/system/filesystem.h>
 
@@ -149,6 +150,21 @@ void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CC
 		}
 	}
 }
+/** The particle filter's algorithm choices, which MRPT reads as plain
+ * numbers and only refuses (as its own exception) on the run's first step:
+ * checked strictly in the user's file, and together in the merged one. */
+void requireFilterChoices(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged)
+{
+	lvf::common::IniSection ini(user, "PF_options");
+	ini.integer("PF_algorithm", 0, 0, 3);
+	ini.integer("resamplingMethod", 0, 0, 3);
+	ini.integer("adaptiveSampleSize", 1, 0, 1);
+	// MRPT's KLD-adaptive sampling draws multinomially and throws otherwise.
+	if (merged.read_int("PF_options", "adaptiveSampleSize", 1) != 0 &&
+		merged.read_int("PF_options", "resamplingMethod", 0) != 0)
+		throw InputError(ini.sourceName(), "[PF_options] resamplingMethod",
+			"must be 0 (multinomial) with adaptiveSampleSize = 1, MRPT's KLD sampling draws no other way");
+}
 }  // namespace
 
 void GlobalMapsOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section)
@@ -192,6 +208,7 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 		const std::string beside = mrpt::system::extractFileDirectory(path) + c.mapFile;
 		if (mrpt::system::fileExists(beside)) c.mapFile = beside;
 	}
+	if (user) requireFilterChoices(*user, c.pfSections);
 	if (c.initMin.x > c.initMax.x || c.initMin.y > c.initMax.y || c.initMin.phi > c.initMax.phi)
 		throw InputError(path.empty() ? "<defaults>" : path, "[LocalizationExperiment] init_PDF_min_*",
 						 "must not exceed init_PDF_max_*");
@@ -202,6 +219,16 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 	c.obsOnlyOdometry.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
 	c.obsOnlyOdometry.gaussianModel.minStdXY = cfg.read_double("DummyOdometryParams", "minStdXY", 0.15);
 	c.obsOnlyOdometry.gaussianModel.minStdPHI = mrpt::DEG2RAD(cfg.read_double("DummyOdometryParams", "minStdPHI", 5.0));
+	try
+	{
+		// MRPT checks a map's options (a cell size > 0, ...) only as it
+		// builds the map, deep in a run: built once here to ask.
+		mrpt::maps::CMultiMetricMap maps(c.maps);
+	}
+	catch (const std::exception& e)
+	{
+		throw InputError(path, "[MetricMap]", "MRPT cannot build the map it describes: " + lvf::common::exceptionMessage(e));
+	}
 	return c;
 }
 

@@ -8,8 +8,10 @@
 //
 // MRPT's loaders ignore unknown keys and read "abc" as 0; here every key of a
 // pf-localization section must be one the built-in defaults list (or one of
-// pf-localization's display/logging keys, accepted and unused), and the
-// numbers of [LocalizationExperiment] are parsed strictly.
+// pf-localization's display/logging keys, accepted and unused), the
+// numbers of [LocalizationExperiment] and the filter's algorithm choices are
+// parsed strictly, and the maps [MetricMap] describes are built once to see
+// that MRPT can (it asserts on their options only as it builds them).
 
 #include <lvfusion/planning/ValueIterationPlanner.h>
 #include <mrpt/bayes/CParticleFilter.h>
