@@ -485,6 +485,7 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 	write("algorithm.ini", "[PF_options]\nPF_algorithm = 7\n");
 	write("resampling.ini", "[PF_options]\nresamplingMethod = 2\n");
 	write("cell.ini", "[MetricMap_occupancyGrid_00_creationOpts]\nresolution = 0\n");
+	write("likelihood.ini", "[MetricMap_occupancyGrid_00_likelihoodOpts]\nlikelihoodMethod = -3\n");
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
 		{"--input " + sample + " --map prior", "prior: no file extension to tell the map format"},
@@ -502,7 +503,8 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --config algorithm.ini", "algorithm.ini: [PF_options] PF_algorithm: 7 is out of range [0, 3]"},
 		{"--input " + sample + " --config resampling.ini",
 			"resampling.ini: [PF_options] resamplingMethod: must be 0 (multinomial) with adaptiveSampleSize = 1"},
-		{"--input " + sample + " --config cell.ini", "cell.ini: [MetricMap]: MRPT cannot build the map it describes: ASSERT_GT_(res"},
+		{"--input " + sample + " --config likelihood.ini", "likelihood.ini: MRPT's particle filter or maps refuse it: Invalid value '-3'"},
+		{"--input " + sample + " --config cell.ini", "cell.ini: MRPT's particle filter or maps refuse it: ASSERT_GT_(res"},
 	};
 	for (const auto& [args, message] : cases)
 	{

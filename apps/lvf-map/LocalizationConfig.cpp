@@ -190,6 +190,7 @@ void GlobalMapsOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 LocalizationConfig LocalizationConfig::load(const std::string& path)
 {
 	LocalizationConfig c;
+	const std::string source = path.empty() ? "<defaults>" : path;
 	c.pfSections.setContent(std::string(kDefaultPfSections));
 	std::unique_ptr<mrpt::config::CConfigFile> user;
 	if (!path.empty())
@@ -210,25 +211,25 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 	}
 	if (user) requireFilterChoices(*user, c.pfSections);
 	if (c.initMin.x > c.initMax.x || c.initMin.y > c.initMax.y || c.initMin.phi > c.initMax.phi)
-		throw InputError(path.empty() ? "<defaults>" : path, "[LocalizationExperiment] init_PDF_min_*",
+		throw InputError(source, "[LocalizationExperiment] init_PDF_min_*",
 						 "must not exceed init_PDF_max_*");
 	const auto& cfg = c.pfSections;
-	c.pf.loadFromConfigFile(cfg, "PF_options");
-	c.monteCarlo.KLD_params.loadFromConfigFile(cfg, "KLD_options");
-	c.maps.loadFromConfigFile(cfg, "MetricMap");
-	c.obsOnlyOdometry.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-	c.obsOnlyOdometry.gaussianModel.minStdXY = cfg.read_double("DummyOdometryParams", "minStdXY", 0.15);
-	c.obsOnlyOdometry.gaussianModel.minStdPHI = mrpt::DEG2RAD(cfg.read_double("DummyOdometryParams", "minStdPHI", 5.0));
 	try
 	{
+		c.pf.loadFromConfigFile(cfg, "PF_options");
+		c.monteCarlo.KLD_params.loadFromConfigFile(cfg, "KLD_options");
+		c.maps.loadFromConfigFile(cfg, "MetricMap");
 		// MRPT checks a map's options (a cell size > 0, ...) only as it
 		// builds the map, deep in a run: built once here to ask.
 		mrpt::maps::CMultiMetricMap maps(c.maps);
 	}
 	catch (const std::exception& e)
 	{
-		throw InputError(path, "[MetricMap]", "MRPT cannot build the map it describes: " + lvf::common::exceptionMessage(e));
+		throw InputError(source, "", "MRPT's particle filter or maps refuse it: " + lvf::common::exceptionMessage(e));
 	}
+	c.obsOnlyOdometry.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+	c.obsOnlyOdometry.gaussianModel.minStdXY = cfg.read_double("DummyOdometryParams", "minStdXY", 0.15);
+	c.obsOnlyOdometry.gaussianModel.minStdPHI = mrpt::DEG2RAD(cfg.read_double("DummyOdometryParams", "minStdPHI", 5.0));
 	return c;
 }
 
