@@ -485,6 +485,11 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 	write("algorithm.ini", "[PF_options]\nPF_algorithm = 7\n");
 	write("resampling.ini", "[PF_options]\nresamplingMethod = 2\n");
 	write("cell.ini", "[MetricMap_occupancyGrid_00_creationOpts]\nresolution = 0\n");
+	// A simulated run's truth beside it that cannot be read: told before
+	// the work, not as the report's last line after the outputs.
+	fs::create_directories(m_dir / "beside");
+	fs::copy_file(sample, m_dir / "beside/corridor_desk.rawlog");
+	write("beside/corridor_desk_obstacles.gridmap.gz", "not a grid\n");
 	write("likelihood.ini", "[MetricMap_occupancyGrid_00_likelihoodOpts]\nlikelihoodMethod = -3\n");
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
@@ -497,6 +502,8 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --start '0;0'", "--start: expected x,y in metres, got '0;0'"},
 		{"--input no_odometry.rawlog", "no_odometry.rawlog: no odometry"},
 		{"--input missing.rawlog", "missing.rawlog: input rawlog not found"},
+		{"--input /dev/null", "/dev/null: input rawlog is not a regular file"},
+		{"--input beside/corridor_desk.rawlog", "beside/corridor_desk_obstacles.gridmap.gz: not a readable MRPT mrpt::maps::COccupancyGridMap2D"},
 		{"--input " + sample + " --config key.ini", "key.ini: [PF_options] BETTA: unknown key"},
 		{"--input " + sample + " --config section.ini", "section.ini: [ParticleFilter]: unknown section"},
 		{"--input " + sample + " --config number.ini", "number.ini: [LocalizationExperiment] particles_count"},

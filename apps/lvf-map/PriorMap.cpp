@@ -1,13 +1,12 @@
 #include "PriorMap.h"
 
 #include "GlobalGrids.h"
+#include "SerialisedFile.h"
 
 #include <lvfusion/common/InputError.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose3DPDF.h>
-#include <mrpt/serialization/CArchive.h>
 #include <mrpt/slam/CMetricMapBuilderICP.h>
 #include <mrpt/system/filesystem.h>
 #include <mrpt/system/string_utils.h>
@@ -28,31 +27,18 @@ mrpt::maps::COccupancyGridMap2D& gridOf(mrpt::maps::CMultiMetricMap& map, const 
 	return *grid;
 }
 
-template <typename T>
-void readSerialised(const std::string& path, T& object)
-{
-	try
-	{
-		mrpt::io::CFileGZInputStream in(path);
-		mrpt::serialization::archiveFrom(in) >> object;
-	}
-	catch (const std::exception&)
-	{
-		throw InputError(path, "", "not a readable MRPT " + std::string(object.GetRuntimeClass()->className));
-	}
-}
 }  // namespace
 
 std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::maps::CMultiMetricMap& map)
 {
-	lvf::common::requireInputFile(path, "map file");
+	lvf::common::requireRegularInputFile(path, "map file");
 	// Like pf-localization: the extension decides, a trailing .gz ignored.
 	const std::string ext = mrpt::system::lowerCase(mrpt::system::extractFileExtension(path, true));
 	static const std::set<std::string> images{"png", "jpg", "jpeg", "bmp", "pgm", "ppm", "tif", "tiff"};
 	if (ext == "simplemap")
 	{
 		mrpt::maps::CSimpleMap simple;
-		readSerialised(path, simple);
+		readSerialisedFile(path, simple, "map file");
 		if (simple.empty()) throw InputError(path, "", "empty simple map");
 		loadSimpleMap(simple, map);
 		return mrpt::format("%s (simple map, %zu keyframes)", path.c_str(), simple.size());
@@ -60,7 +46,7 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 	auto& grid = gridOf(map, path);
 	if (ext == "gridmap")
 	{
-		readSerialised(path, grid);
+		readSerialisedFile(path, grid, "map file");
 		return mrpt::format("%s (grid map, %ux%u cells of %.3f m)", path.c_str(), grid.getSizeX(), grid.getSizeY(), grid.getResolution());
 	}
 	if (images.count(ext))

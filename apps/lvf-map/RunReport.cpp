@@ -1,10 +1,9 @@
 #include "RunReport.h"
+#include "SerialisedFile.h"
 
 #include <lvfusion/metrics/ObstacleGridScore.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
-#include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
 #include <optional>
@@ -32,30 +31,37 @@ std::optional<std::string> besideInput(const std::string& input, const std::stri
 }
 }  // namespace
 
+RunTruth loadRunTruth(const std::string& input)
+{
+	RunTruth truth;
+	truth.posesPath = besideInput(input, "_gt_poses.txt");
+	if (truth.posesPath) truth.poses = lvf::metrics::readPoseFile(*truth.posesPath);
+	truth.obstaclesPath = besideInput(input, "_obstacles.gridmap.gz");
+	if (truth.obstaclesPath) readSerialisedFile(*truth.obstaclesPath, truth.obstacles.emplace(), "ground-truth grid");
+	return truth;
+}
+
 void printRunReport(
-	std::ostream& out, const std::string& input, const std::vector<lvf::metrics::StampedPose>& poses,
+	std::ostream& out, const RunTruth& truth, const std::vector<lvf::metrics::StampedPose>& poses,
 	const std::vector<MapPlan>& plans, const Endpoints& ends)
 {
-	if (const auto gtPath = besideInput(input, "_gt_poses.txt"))
+	if (truth.posesPath)
 	{
-		const auto e = lvf::metrics::compareTrajectories(poses, lvf::metrics::readPoseFile(*gtPath));
+		const auto e = lvf::metrics::compareTrajectories(poses, truth.poses);
 		out << mrpt::format(
 			"  localisation against %s (%zu poses): median error %.3f m, %.2f deg (max %.3f m)\n",
-			gtPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
+			truth.posesPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
 	}
 	std::optional<lvf::planning::TraversableGrid> truthGrid;
-	if (const auto obstaclesPath = besideInput(input, "_obstacles.gridmap.gz"))
+	if (truth.obstacles)
 	{
-		mrpt::maps::COccupancyGridMap2D truth;
-		mrpt::io::CFileGZInputStream in(*obstaclesPath);
-		mrpt::serialization::archiveFrom(in) >> truth;
-		truthGrid.emplace(truth, 0.0, 0.5);
+		truthGrid.emplace(*truth.obstacles, 0.0, 0.5);
 		for (const auto& p : plans)
 		{
-			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, truth);
+			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, *truth.obstacles);
 			out << mrpt::format(
 				"  %s map against %s: recall %.3f of %zu observed obstacle cells, precision %.3f of %zu occupied\n",
-				p.name.c_str(), obstaclesPath->c_str(), s.recall(), s.truthObserved, s.precision(), s.mapOccupied);
+				p.name.c_str(), truth.obstaclesPath->c_str(), s.recall(), s.truthObserved, s.precision(), s.mapOccupied);
 		}
 	}
 	for (const auto& p : plans)

@@ -246,6 +246,7 @@ int run(int argc, char** argv)
 	const auto requested = requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
+	const auto truth = lvf::apps::loadRunTruth(input);
 
 	// The prior map, and where the particles start.
 	const auto prior = priorFor(config, argMap.getValue().empty() ? config.mapFile : argMap.getValue(), runLog);
@@ -298,7 +299,7 @@ int run(int argc, char** argv)
 		std::cout << mrpt::format(
 			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
 			onMap->median, onMap->under, onMap->total);
-	lvf::apps::printRunReport(std::cout, input, poses, plans, ends);
+	lvf::apps::printRunReport(std::cout, truth, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";

@@ -41,6 +41,14 @@ void requireInputFile(const std::string& path, const std::string& what)
 	if (!std::ifstream(path)) throw InputError(path, "", std::string("cannot read it: ") + std::strerror(errno));
 }
 
+void requireRegularInputFile(const std::string& path, const std::string& what)
+{
+	requireInputFile(path, what);
+	std::error_code ec;
+	if (!std::filesystem::is_regular_file(path, ec))
+		throw InputError(path, "", what + " is not a regular file (a device or pipe): MRPT reads it from a file only");
+}
+
 std::string exceptionMessage(const std::exception& e)
 {
 	const std::string s = e.what();

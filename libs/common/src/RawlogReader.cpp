@@ -8,7 +8,7 @@ namespace lvf::common
 {
 RawlogReader::RawlogReader(const std::string& path) : m_path(path)
 {
-	requireInputFile(path, "input rawlog");
+	requireRegularInputFile(path, "input rawlog");
 	m_file = std::make_unique<mrpt::io::CFileGZInputStream>(path);
 	m_archive = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(*m_file);
 }

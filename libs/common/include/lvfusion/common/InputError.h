@@ -30,6 +30,10 @@ class InputError : public std::runtime_error
  * look like an empty file.) */
 void requireInputFile(const std::string& path, const std::string& what);
 
+/** requireInputFile, and a regular file: MRPT's (gzip) stream reader asks
+ * a file's size first, which a device or a pipe has not. */
+void requireRegularInputFile(const std::string& path, const std::string& what);
+
 /** The line of an exception's text that says what went wrong. MRPT's
  * exceptions open with a "==== MRPT exception ====" banner and end with a
  * call stack; some put the message after "Message:". */
