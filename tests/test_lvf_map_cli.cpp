@@ -196,6 +196,48 @@ TEST_F(LvfMap, CorridorDeskSampleLocalisesWithinTargets)
 	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
 }
 
+TEST_F(LvfMap, ASelfBuiltMapIsComparedWithTheTruthInTheTruthsFrame)
+{
+	// The shipped box room: a sensory-frame log, whose odometry starts at the
+	// origin while the robot stands at (3, 0.6) facing 90 deg, and no prior
+	// map, so the map lvf-map builds is in the odometry frame. Its summary
+	// must place that frame on the truth before comparing: compared as they
+	// are, the poses are 2.7 m and 90 deg off and the path seems to run
+	// through the walls.
+	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+	const auto r = run(kMap, "--input " + sample + " --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	std::cout << r.out;
+	std::smatch m;
+	ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(lies at \(([-0-9.]+) m, ([-0-9.]+) m, ([-0-9.]+) deg\))")))
+		<< r.out;
+	EXPECT_NEAR(std::stod(m[1]), 3.0, 1e-3);
+	EXPECT_NEAR(std::stod(m[2]), 0.6, 1e-3);
+	EXPECT_NEAR(std::stod(m[3]), 90.0, 0.01);
+	ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(median error ([0-9.]+) m, ([0-9.]+) deg)"))) << r.out;
+	EXPECT_LT(std::stod(m[1]), 0.05);
+	EXPECT_LT(std::stod(m[2]), 1.0);
+	ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(laser map against .*: recall ([0-9.]+) .* precision ([0-9.]+))")))
+		<< r.out;
+	EXPECT_GT(std::stod(m[2]), 0.9);  // what the laser maps is there
+	ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(([0-9.]+) m of it through true obstacles, clearance to them ([0-9.]+) m)")))
+		<< r.out;
+	EXPECT_EQ(std::stod(m[1]), 0.0);
+	EXPECT_GT(std::stod(m[2]), 0.30 - 0.05);  // the robot's radius, up to a cell
+
+	// The same comparison by hand: the written poses, moved by the first
+	// scan's truth pose composed with the inverse of its estimate (the
+	// particles start at the odometry), against the truth file.
+	const auto poses = lvf::metrics::readPoseFile((m_dir / "out/box_room_poses.txt").string());
+	const auto truth = lvf::metrics::readPoseFile(std::string(LVF_SAMPLES_DIR) + "/box_room_gt_poses.txt");
+	ASSERT_FALSE(poses.empty());
+	const auto first = lvf::metrics::poseStampedAt(truth, poses.front().timestamp);
+	ASSERT_NE(first, nullptr);
+	const auto e = lvf::metrics::compareTrajectories(poses, truth, first->pose + (-poses.front().pose));
+	EXPECT_EQ(e.matched, 8u);
+	EXPECT_LT(e.medianPosition, 0.05);
+}
+
 TEST_F(LvfMap, SeededRandomWorldsLocaliseWithinTargets)
 {
 	// lvf-simulate's seeded rooms, with a longer drive than its two poses:

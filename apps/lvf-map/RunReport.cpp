@@ -41,24 +41,40 @@ RunTruth loadRunTruth(const std::string& input)
 	return truth;
 }
 
-void printRunReport(
-	std::ostream& out, const RunTruth& truth, const std::vector<lvf::metrics::StampedPose>& poses,
-	const std::vector<MapPlan>& plans, const Endpoints& ends)
+std::optional<mrpt::poses::CPose2D> mapFrameInTruth(const RunTruth& truth, bool mapFromRun, const MapStep& firstStep)
 {
-	if (truth.posesPath)
+	if (!mapFromRun) return mrpt::poses::CPose2D();
+	const auto first = lvf::metrics::poseStampedAt(truth.poses, mrpt::Clock::toDouble(firstStep.laser->timestamp));
+	if (!first) return std::nullopt;
+	return first->pose + (-firstStep.odometry);
+}
+
+void printRunReport(
+	std::ostream& out, const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& mapInTruth,
+	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends)
+{
+	if ((truth.posesPath || truth.obstaclesPath) && !mapInTruth)
+		out << "  the truth beside the input has no pose at the first scan's time, which would place the map built "
+			   "from the run in the truth's frame: not compared\n";
+	if (mapInTruth && *mapInTruth != mrpt::poses::CPose2D())
+		out << mrpt::format(
+			"  the map's frame (the run's odometry) lies at (%.3f m, %.3f m, %.2f deg) in the truth's, placed by the "
+			"first scan: the comparisons below are made there\n",
+			mapInTruth->x(), mapInTruth->y(), mrpt::RAD2DEG(mapInTruth->phi()));
+	if (truth.posesPath && mapInTruth)
 	{
-		const auto e = lvf::metrics::compareTrajectories(poses, truth.poses);
+		const auto e = lvf::metrics::compareTrajectories(poses, truth.poses, *mapInTruth);
 		out << mrpt::format(
 			"  localisation against %s (%zu poses): median error %.3f m, %.2f deg (max %.3f m)\n",
 			truth.posesPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
 	}
 	std::optional<lvf::planning::TraversableGrid> truthGrid;
-	if (truth.obstacles)
+	if (truth.obstacles && mapInTruth)
 	{
 		truthGrid.emplace(*truth.obstacles, 0.0, 0.5);
 		for (const auto& p : plans)
 		{
-			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, *truth.obstacles);
+			const auto s = lvf::metrics::scoreObstacleGrid(*p.grid, *truth.obstacles, *mapInTruth);
 			out << mrpt::format(
 				"  %s map against %s: recall %.3f of %zu observed obstacle cells, precision %.3f of %zu occupied\n",
 				p.name.c_str(), truth.obstaclesPath->c_str(), s.recall(), s.truthObserved, s.precision(), s.mapOccupied);
@@ -77,10 +93,14 @@ void printRunReport(
 		out << mrpt::format(
 			"path %.2f m (%zu value-iteration sweeps)", lvf::planning::pathLength(p.plan.path), p.plan.sweeps);
 		if (truthGrid)
+		{
+			lvf::planning::Path inTruth;
+			for (const auto& q : p.plan.path) inTruth.push_back(*mapInTruth + q);
 			out << mrpt::format(
 				", %.2f m of it through true obstacles, clearance to them %.2f m",
-				lvf::planning::lengthThroughObstacles(p.plan.path, *truthGrid),
-				lvf::planning::minimumClearance(p.plan.path, *truthGrid));
+				lvf::planning::lengthThroughObstacles(inTruth, *truthGrid),
+				lvf::planning::minimumClearance(inTruth, *truthGrid));
+		}
 		out << "\n";
 	}
 }

@@ -4,6 +4,7 @@
 // compare with the simulator's truth.
 
 #include "MapPlans.h"
+#include "MapRun.h"
 
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -28,8 +29,16 @@ struct RunTruth
  * be read is an InputError, not a report cut short). */
 RunTruth loadRunTruth(const std::string& input);
 
+/** Where the frame of lvf-map's poses, grids and paths lies in the truth's.
+ * A prior map the user gives is taken to be drawn in the world's frame. A map
+ * built from the run is in the run's odometry frame, which a sensory-frame
+ * log starts at the origin wherever the robot is: it is placed on the truth
+ * by the first scan (its truth pose composed with the inverse of its
+ * odometry). nullopt when no truth pose has that scan's time. */
+std::optional<mrpt::poses::CPose2D> mapFrameInTruth(const RunTruth& truth, bool mapFromRun, const MapStep& firstStep);
+
 void printRunReport(
-	std::ostream& out, const RunTruth& truth, const std::vector<lvf::metrics::StampedPose>& poses,
-	const std::vector<MapPlan>& plans, const Endpoints& ends);
+	std::ostream& out, const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& mapInTruth,
+	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends);
 
 }  // namespace lvf::apps

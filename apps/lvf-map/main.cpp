@@ -299,7 +299,9 @@ int run(int argc, char** argv)
 		std::cout << mrpt::format(
 			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
 			onMap->median, onMap->under, onMap->total);
-	lvf::apps::printRunReport(std::cout, truth, poses, plans, ends);
+	lvf::apps::printRunReport(
+		std::cout, truth, lvf::apps::mapFrameInTruth(truth, prior.ownMap.has_value(), runLog.steps.front()), poses,
+		plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";

@@ -49,18 +49,26 @@ void writePoseFile(const std::string& path, const std::vector<StampedPose>& pose
 			"%zu %.6f %.5f %.5f %.6f\n", p.frame, p.timestamp, p.pose.x(), p.pose.y(), p.pose.phi());
 }
 
+const StampedPose* poseStampedAt(const std::vector<StampedPose>& poses, double timestamp)
+{
+	const auto p = std::find_if(poses.begin(), poses.end(), [&](const StampedPose& q) {
+		return std::abs(q.timestamp - timestamp) < 1e-4;
+	});
+	return p == poses.end() ? nullptr : &*p;
+}
+
 TrajectoryError compareTrajectories(
-	const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth)
+	const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth,
+	const mrpt::poses::CPose2D& estimateInTruth)
 {
 	std::vector<double> position, heading;
 	for (const auto& e : estimate)
 	{
-		const auto t = std::find_if(truth.begin(), truth.end(), [&](const StampedPose& p) {
-			return std::abs(p.timestamp - e.timestamp) < 1e-4;
-		});
-		if (t == truth.end()) continue;
-		position.push_back(std::hypot(e.pose.x() - t->pose.x(), e.pose.y() - t->pose.y()));
-		heading.push_back(std::abs(mrpt::math::wrapToPi(e.pose.phi() - t->pose.phi())));
+		const auto t = poseStampedAt(truth, e.timestamp);
+		if (!t) continue;
+		const auto pose = estimateInTruth + e.pose;
+		position.push_back(std::hypot(pose.x() - t->pose.x(), pose.y() - t->pose.y()));
+		heading.push_back(std::abs(mrpt::math::wrapToPi(pose.phi() - t->pose.phi())));
 	}
 	TrajectoryError err;
 	err.matched = position.size();

@@ -11,9 +11,12 @@
 //   precision = map occupied cells within `tolerance` of a truth obstacle
 //               cell / map occupied cells.
 // A cell is occupied when MRPT's value (probability of being free) is below
-// 0.5 - margin, free above 0.5 + margin, unobserved in between.
+// 0.5 - margin, free above 0.5 + margin, unobserved in between. The map's
+// frame lies at `mapInTruth` in the truth's (a map built in a run's odometry
+// frame need not share the simulator's world frame).
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/poses/CPose2D.h>
 
 namespace lvf::metrics
 {
@@ -27,6 +30,6 @@ struct ObstacleGridScore
 
 ObstacleGridScore scoreObstacleGrid(
 	const mrpt::maps::COccupancyGridMap2D& map, const mrpt::maps::COccupancyGridMap2D& truth,
-	double tolerance = 0.10, double margin = 0.05);
+	const mrpt::poses::CPose2D& mapInTruth = {}, double tolerance = 0.10, double margin = 0.05);
 
 }  // namespace lvf::metrics

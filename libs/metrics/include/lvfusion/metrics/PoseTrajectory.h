@@ -29,8 +29,13 @@ struct TrajectoryError
 	double maxPosition = 0;	 //!< [m]
 };
 
-/** Errors of `estimate` against the `truth` pose stamped within 1e-4 s of it. */
+/** The pose of `poses` stamped within 1e-4 s of `timestamp`; null if none. */
+const StampedPose* poseStampedAt(const std::vector<StampedPose>& poses, double timestamp);
+
+/** Errors of `estimate` against the `truth` pose stamped within 1e-4 s of
+ * it, the estimate's frame lying at `estimateInTruth` in the truth's. */
 TrajectoryError compareTrajectories(
-	const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth);
+	const std::vector<StampedPose>& estimate, const std::vector<StampedPose>& truth,
+	const mrpt::poses::CPose2D& estimateInTruth = {});
 
 }  // namespace lvf::metrics
