@@ -236,6 +236,20 @@ TEST_F(LvfMap, ASelfBuiltMapIsComparedWithTheTruthInTheTruthsFrame)
 	const auto e = lvf::metrics::compareTrajectories(poses, truth, first->pose + (-poses.front().pose));
 	EXPECT_EQ(e.matched, 8u);
 	EXPECT_LT(e.medianPosition, 0.05);
+
+	// The world file's start and target are in the world's frame too: on
+	// the map they are the robot's first pose (the origin) and the target
+	// (5.3, 5.3) seen from (3, 0.6) facing 90 deg, i.e. (4.7, -2.3).
+	const std::string world = std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml";
+	const auto w = run(kMap, "--input " + sample + " --world " + world + " --outdir outw");
+	ASSERT_EQ(w.status, 0) << w.err;
+	ASSERT_TRUE(std::regex_search(
+		w.out, m, std::regex(R"(laser map, \(([-0-9.]+), ([-0-9.]+)\) -> \(([-0-9.]+), ([-0-9.]+)\))")))
+		<< w.out;
+	EXPECT_NEAR(std::stod(m[1]), 0.0, 0.01);
+	EXPECT_NEAR(std::stod(m[2]), 0.0, 0.01);
+	EXPECT_NEAR(std::stod(m[3]), 4.7, 0.01);
+	EXPECT_NEAR(std::stod(m[4]), -2.3, 0.01);
 }
 
 TEST_F(LvfMap, SeededRandomWorldsLocaliseWithinTargets)

@@ -41,12 +41,14 @@ RunTruth loadRunTruth(const std::string& input)
 	return truth;
 }
 
-std::optional<mrpt::poses::CPose2D> mapFrameInTruth(const RunTruth& truth, bool mapFromRun, const MapStep& firstStep)
+std::optional<mrpt::poses::CPose2D> mapFrameInTruth(
+	const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& worldStart, bool mapFromRun,
+	const MapStep& firstStep)
 {
 	if (!mapFromRun) return mrpt::poses::CPose2D();
 	const auto first = lvf::metrics::poseStampedAt(truth.poses, mrpt::Clock::toDouble(firstStep.laser->timestamp));
-	if (!first) return std::nullopt;
-	return first->pose + (-firstStep.odometry);
+	if (!first && !worldStart) return std::nullopt;
+	return (first ? first->pose : *worldStart) + (-firstStep.odometry);
 }
 
 void printRunReport(
@@ -58,8 +60,8 @@ void printRunReport(
 			   "from the run in the truth's frame: not compared\n";
 	if (mapInTruth && *mapInTruth != mrpt::poses::CPose2D())
 		out << mrpt::format(
-			"  the map's frame (the run's odometry) lies at (%.3f m, %.3f m, %.2f deg) in the truth's, placed by the "
-			"first scan: the comparisons below are made there\n",
+			"  the map (in the run's odometry frame) lies at (%.3f m, %.3f m, %.2f deg) in the world's frame, by where "
+			"the first scan was taken: the world's start and target and the truth are placed on it\n",
 			mapInTruth->x(), mapInTruth->y(), mrpt::RAD2DEG(mapInTruth->phi()));
 	if (truth.posesPath && mapInTruth)
 	{

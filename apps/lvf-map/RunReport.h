@@ -29,13 +29,16 @@ struct RunTruth
  * be read is an InputError, not a report cut short). */
 RunTruth loadRunTruth(const std::string& input);
 
-/** Where the frame of lvf-map's poses, grids and paths lies in the truth's.
- * A prior map the user gives is taken to be drawn in the world's frame. A map
- * built from the run is in the run's odometry frame, which a sensory-frame
- * log starts at the origin wherever the robot is: it is placed on the truth
- * by the first scan (its truth pose composed with the inverse of its
- * odometry). nullopt when no truth pose has that scan's time. */
-std::optional<mrpt::poses::CPose2D> mapFrameInTruth(const RunTruth& truth, bool mapFromRun, const MapStep& firstStep);
+/** Where the frame of lvf-map's poses, grids and paths lies in the truth's
+ * (the simulated world's). A prior map the user gives is taken to be drawn in
+ * the world's frame. A map built from the run is in the run's odometry frame,
+ * which a sensory-frame log starts at the origin wherever the robot is: it is
+ * placed by the first scan, whose pose in the world is the truth pose of its
+ * time, else the world file's first path pose (`worldStart`), composed with
+ * the inverse of its odometry. nullopt when neither is known. */
+std::optional<mrpt::poses::CPose2D> mapFrameInTruth(
+	const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& worldStart, bool mapFromRun,
+	const MapStep& firstStep);
 
 void printRunReport(
 	std::ostream& out, const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& mapInTruth,

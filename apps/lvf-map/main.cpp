@@ -68,6 +68,9 @@ struct RequestedEndpoints
 {
 	std::optional<TPoint2D> start, goal;
 	std::string startSource, goalSource;
+	/** --world's first path pose: where its run starts, in the world's frame. */
+	std::optional<mrpt::poses::CPose2D> worldStart;
+	bool startFromWorld = false, goalFromWorld = false;	 //!< in the world's frame, not the map's
 };
 
 /** From --world (its first path pose, its target), then --start / --goal
@@ -78,14 +81,26 @@ RequestedEndpoints requestedEndpoints(const std::string& worldFile, const std::s
 	if (!worldFile.empty())
 	{
 		const auto world = lvf::simulation::loadWorldFile(worldFile);
+		r.worldStart = mrpt::poses::CPose2D(world.path.front());
 		r.start = TPoint2D(world.path.front().x, world.path.front().y);
 		r.startSource = r.goalSource = worldFile;
 		if (!world.target) throw InputError(worldFile, "target", "the world has no target to plan to");
 		r.goal = *world.target;
+		r.startFromWorld = r.goalFromWorld = true;
 	}
-	if (!start.empty()) r.start = parsePoint(start, "--start"), r.startSource = "--start";
-	if (!goal.empty()) r.goal = parsePoint(goal, "--goal"), r.goalSource = "--goal";
+	if (!start.empty()) r.start = parsePoint(start, "--start"), r.startSource = "--start", r.startFromWorld = false;
+	if (!goal.empty()) r.goal = parsePoint(goal, "--goal"), r.goalSource = "--goal", r.goalFromWorld = false;
 	return r;
+}
+
+/** The world's start and target moved into the map's frame, which lies at
+ * `mapInWorld` in the world's (a map built from a sensory-frame log starts
+ * where the robot stands, not at the world's origin). */
+void placeWorldEndpointsOnMap(RequestedEndpoints& r, const mrpt::poses::CPose2D& mapInWorld)
+{
+	const auto worldToMap = -mapInWorld;
+	if (r.startFromWorld) r.start = worldToMap + *r.start;
+	if (r.goalFromWorld) r.goal = worldToMap + *r.goal;
 }
 
 /** The map the particles localise in, and where they start. */
@@ -225,7 +240,7 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out", "DIR", cmd);
 	TCLAP::ValueArg<std::string> argStart("", "start", "Start of the planned path (default: the world's first pose, else the first localised pose)", false, "", "X,Y", cmd);
 	TCLAP::ValueArg<std::string> argGoal("", "goal", "Goal of the planned path (default: the world's target, else the last localised pose)", false, "", "X,Y", cmd);
-	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file giving start (first path pose) and goal (target)", false, "", "W.yaml", cmd);
+	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file giving start (first path pose) and goal (target), in the world's frame (moved onto a map built from the run by where its first scan was taken)", false, "", "W.yaml", cmd);
 	TCLAP::ValueArg<unsigned> argSeed("", "seed", "Seed of the particle filter's random numbers (default 1)", false, 1, "N", cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
@@ -243,13 +258,16 @@ int run(int argc, char** argv)
 	const std::string name = fs::path(input).stem().string();
 
 	// Where the plan starts and ends, checked before any work.
-	const auto requested = requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
+	auto requested = requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 	const auto truth = lvf::apps::loadRunTruth(input);
 
 	// The prior map, and where the particles start.
 	const auto prior = priorFor(config, argMap.getValue().empty() ? config.mapFile : argMap.getValue(), runLog);
+	const auto mapInTruth =
+		lvf::apps::mapFrameInTruth(truth, requested.worldStart, prior.ownMap.has_value(), runLog.steps.front());
+	if (mapInTruth) placeWorldEndpointsOnMap(requested, *mapInTruth);
 
 	// 1-2. Localise every scan; accumulate both grids at the estimates.
 	mrpt::random::getRandomGenerator().randomize(argSeed.getValue());
@@ -299,9 +317,7 @@ int run(int argc, char** argv)
 		std::cout << mrpt::format(
 			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
 			onMap->median, onMap->under, onMap->total);
-	lvf::apps::printRunReport(
-		std::cout, truth, lvf::apps::mapFrameInTruth(truth, prior.ownMap.has_value(), runLog.steps.front()), poses,
-		plans, ends);
+	lvf::apps::printRunReport(std::cout, truth, mapInTruth, poses, plans, ends);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
 			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
