@@ -546,7 +546,14 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 	fs::create_directories(m_dir / "beside");
 	fs::copy_file(sample, m_dir / "beside/corridor_desk.rawlog");
 	write("beside/corridor_desk_obstacles.gridmap.gz", "not a grid\n");
-	write("likelihood.ini", "[MetricMap_occupancyGrid_00_likelihoodOpts]\nlikelihoodMethod = -3\n");
+	write("likelihood.ini", "[MetricMap_occupancyGrid_00_likelihoodOpts]\nlikelihoodMethod = lmBogus\n");
+	// Numbers MRPT takes without a range and then runs on in silence.
+	write("method.ini", "[MetricMap_occupancyGrid_00_likelihoodOpts]\nlikelihoodMethod = 99\n");
+	write("kld_bin.ini", "[KLD_options]\nKLD_binSize_XY = 0\n");
+	write("kld_sizes.ini", "[KLD_options]\nKLD_minSampleSize = 6000\n");
+	write("beta.ini", "[PF_options]\nBETA = nan\n");
+	write("floor.ini", "[DummyOdometryParams]\nminStdXY = -1\n");
+	write("no_map.ini", "[MetricMap]\noccupancyGrid_count = 0\n");
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
 		{"--input " + sample + " --map prior", "prior: no file extension to tell the map format"},
@@ -566,8 +573,18 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --config algorithm.ini", "algorithm.ini: [PF_options] PF_algorithm: 7 is out of range [0, 3]"},
 		{"--input " + sample + " --config resampling.ini",
 			"resampling.ini: [PF_options] resamplingMethod: must be 0 (multinomial) with adaptiveSampleSize = 1"},
-		{"--input " + sample + " --config likelihood.ini", "likelihood.ini: MRPT's particle filter or maps refuse it: Invalid value '-3'"},
-		{"--input " + sample + " --config cell.ini", "cell.ini: MRPT's particle filter or maps refuse it: ASSERT_GT_(res"},
+		{"--input " + sample + " --config likelihood.ini", "likelihood.ini: MRPT's particle filter or maps refuse it: Invalid value 'lmBogus'"},
+		{"--input " + sample + " --config cell.ini",
+			"cell.ini: [MetricMap_occupancyGrid_00_creationOpts] resolution: 0 is out of range"},
+		{"--input " + sample + " --config method.ini",
+			"method.ini: [MetricMap_occupancyGrid_00_likelihoodOpts] likelihoodMethod: 99 is out of range [0, 6]"},
+		{"--input " + sample + " --config kld_bin.ini", "kld_bin.ini: [KLD_options] KLD_binSize_XY: 0 is out of range"},
+		{"--input " + sample + " --config kld_sizes.ini",
+			"kld_sizes.ini: [KLD_options] KLD_minSampleSize: must not exceed KLD_maxSampleSize"},
+		{"--input " + sample + " --config beta.ini", "beta.ini: [PF_options] BETA: 'nan' is not a finite number"},
+		{"--input " + sample + " --config floor.ini", "floor.ini: [DummyOdometryParams] minStdXY: -1 is out of range"},
+		{"--input " + sample + " --config no_map.ini",
+			"no_map.ini: [MetricMap] occupancyGrid_count: no occupancy grid or points map"},
 	};
 	for (const auto& [args, message] : cases)
 	{

@@ -1,4 +1,5 @@
 #include "LocalizationConfig.h"
+#include "PfOptionRanges.h"
 
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
@@ -150,21 +151,6 @@ void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CC
 		}
 	}
 }
-/** The particle filter's algorithm choices, which MRPT reads as plain
- * numbers and only refuses (as its own exception) on the run's first step:
- * checked strictly in the user's file, and together in the merged one. */
-void requireFilterChoices(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged)
-{
-	lvf::common::IniSection ini(user, "PF_options");
-	ini.integer("PF_algorithm", 0, 0, 3);
-	ini.integer("resamplingMethod", 0, 0, 3);
-	ini.integer("adaptiveSampleSize", 1, 0, 1);
-	// MRPT's KLD-adaptive sampling draws multinomially and throws otherwise.
-	if (merged.read_int("PF_options", "adaptiveSampleSize", 1) != 0 &&
-		merged.read_int("PF_options", "resamplingMethod", 0) != 0)
-		throw InputError(ini.sourceName(), "[PF_options] resamplingMethod",
-			"must be 0 (multinomial) with adaptiveSampleSize = 1, MRPT's KLD sampling draws no other way");
-}
 }  // namespace
 
 void GlobalMapsOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section)
@@ -209,7 +195,7 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 		const std::string beside = mrpt::system::extractFileDirectory(path) + c.mapFile;
 		if (mrpt::system::fileExists(beside)) c.mapFile = beside;
 	}
-	if (user) requireFilterChoices(*user, c.pfSections);
+	if (user) requireUsablePfOptions(*user, c.pfSections);
 	if (c.initMin.x > c.initMax.x || c.initMin.y > c.initMax.y || c.initMin.phi > c.initMax.phi)
 		throw InputError(source, "[LocalizationExperiment] init_PDF_min_*",
 						 "must not exceed init_PDF_max_*");
