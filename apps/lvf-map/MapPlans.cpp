@@ -3,6 +3,7 @@
 #include "GlobalGrids.h"
 
 #include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
 #include <opencv2/imgcodecs.hpp>
@@ -47,6 +48,34 @@ void writeMapPlans(
 	for (const auto& grid : lvf::common::onCommonExtent(grids))
 		pictures.push_back(drawPathsOnGrid(grid, drawn, ends.start, ends.goal));
 	cv::imwrite(files.stage(name + "_paths.png"), lvf::common::sideBySide(pictures, labels));
+}
+
+/** Plans on each map. A start or goal the user gave must be usable (an
+ * InputError naming where it came from otherwise); the run's own first and
+ * last poses may not be (then the summary says why there is no path). */
+void planOnEachGrid(
+	std::vector<MapPlan>& plans, const Endpoints& ends, const RequestedEndpoints& requested,
+	const lvf::planning::ValueIterationPlanner::TOptions& options)
+{
+	using lvf::planning::PlanOutcome;
+	const lvf::planning::ValueIterationPlanner planner(options);
+	for (auto& p : plans)
+	{
+		p.plan = planner.plan(*p.grid, ends.start, ends.goal);
+		const auto o = p.plan.outcome;
+		auto where = [&](const mrpt::math::TPoint2D& q, bool outside) {
+			return mrpt::format(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6 ? "(%.2f, %.2f) " : "(%g, %g) ", q.x, q.y) +
+				(outside ? "is outside the " + p.name + " map"
+						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
+							   p.name.c_str(), options.robotRadius));
+		};
+		if (requested.start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
+			throw lvf::common::InputError(
+				requested.startSource, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
+		if (requested.goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
+			throw lvf::common::InputError(
+				requested.goalSource, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
+	}
 }
 
 }  // namespace lvf::apps

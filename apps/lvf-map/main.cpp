@@ -17,17 +17,14 @@
 
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/GridOutputs.h>
-#include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <lvfusion/metrics/ScanOnMap.h>
-#include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
-#include <mrpt/system/string_utils.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,73 +32,12 @@
 #include <iostream>
 #include <optional>
 
-using lvf::common::InputError;
 using mrpt::math::TPoint2D;
 
 namespace
 {
 const std::string kApp = "lvf-map";
 namespace fs = std::filesystem;
-
-TPoint2D parsePoint(const std::string& text, const std::string& option)
-{
-	const auto comma = text.find(',');
-	const auto number = [&](const std::string& part) {
-		size_t used = 0;
-		const double v = std::stod(part, &used);
-		if (mrpt::system::trim(part.substr(used)) != "" || !std::isfinite(v)) throw std::invalid_argument(part);
-		return v;
-	};
-	try
-	{
-		if (comma != std::string::npos) return {number(text.substr(0, comma)), number(text.substr(comma + 1))};
-	}
-	catch (const std::exception&)
-	{
-	}
-	throw InputError(option, "", "expected x,y in metres, got '" + text + "'");
-}
-
-/** The start and goal the user asked for (none: the run's first and last
- * localised poses), and which input named each, for error messages. */
-struct RequestedEndpoints
-{
-	std::optional<TPoint2D> start, goal;
-	std::string startSource, goalSource;
-	/** --world's first path pose: where its run starts, in the world's frame. */
-	std::optional<mrpt::poses::CPose2D> worldStart;
-	bool startFromWorld = false, goalFromWorld = false;	 //!< in the world's frame, not the map's
-};
-
-/** From --world (its first path pose, its target), then --start / --goal
- * over it. */
-RequestedEndpoints requestedEndpoints(const std::string& worldFile, const std::string& start, const std::string& goal)
-{
-	RequestedEndpoints r;
-	if (!worldFile.empty())
-	{
-		const auto world = lvf::simulation::loadWorldFile(worldFile);
-		r.worldStart = mrpt::poses::CPose2D(world.path.front());
-		r.start = TPoint2D(world.path.front().x, world.path.front().y);
-		r.startSource = r.goalSource = worldFile;
-		if (!world.target) throw InputError(worldFile, "target", "the world has no target to plan to");
-		r.goal = *world.target;
-		r.startFromWorld = r.goalFromWorld = true;
-	}
-	if (!start.empty()) r.start = parsePoint(start, "--start"), r.startSource = "--start", r.startFromWorld = false;
-	if (!goal.empty()) r.goal = parsePoint(goal, "--goal"), r.goalSource = "--goal", r.goalFromWorld = false;
-	return r;
-}
-
-/** The world's start and target moved into the map's frame, which lies at
- * `mapInWorld` in the world's (a map built from a sensory-frame log starts
- * where the robot stands, not at the world's origin). */
-void placeWorldEndpointsOnMap(RequestedEndpoints& r, const mrpt::poses::CPose2D& mapInWorld)
-{
-	const auto worldToMap = -mapInWorld;
-	if (r.startFromWorld) r.start = worldToMap + *r.start;
-	if (r.goalFromWorld) r.goal = worldToMap + *r.goal;
-}
 
 /** The map the particles localise in, and where they start. */
 struct Prior
@@ -201,32 +137,6 @@ std::optional<ScansOnMap> summariseScansOnMap(const std::vector<double>& shares)
 	return s;
 }
 
-/** Plans on each map. A start or goal the user gave must be usable (an
- * InputError naming where it came from otherwise); the run's own first and
- * last poses may not be (then the summary says why there is no path). */
-void planOnEachGrid(
-	std::vector<lvf::apps::MapPlan>& plans, const lvf::apps::Endpoints& ends, const RequestedEndpoints& requested,
-	const lvf::planning::ValueIterationPlanner::TOptions& options)
-{
-	using lvf::planning::PlanOutcome;
-	const lvf::planning::ValueIterationPlanner planner(options);
-	for (auto& p : plans)
-	{
-		p.plan = planner.plan(*p.grid, ends.start, ends.goal);
-		const auto o = p.plan.outcome;
-		auto where = [&](const TPoint2D& q, bool outside) {
-			return mrpt::format(std::abs(q.x) < 1e6 && std::abs(q.y) < 1e6 ? "(%.2f, %.2f) " : "(%g, %g) ", q.x, q.y) +
-				(outside ? "is outside the " + p.name + " map"
-						 : mrpt::format("is inside an obstacle of the %s map (grown by the robot radius, %.2f m)",
-							   p.name.c_str(), options.robotRadius));
-		};
-		if (requested.start && (o == PlanOutcome::StartOutsideMap || o == PlanOutcome::StartBlocked))
-			throw InputError(requested.startSource, "", "start " + where(ends.start, o == PlanOutcome::StartOutsideMap));
-		if (requested.goal && (o == PlanOutcome::GoalOutsideMap || o == PlanOutcome::GoalBlocked))
-			throw InputError(requested.goalSource, "", "goal " + where(ends.goal, o == PlanOutcome::GoalOutsideMap));
-	}
-}
-
 int run(int argc, char** argv)
 {
 	TCLAP::CmdLine cmd(
@@ -258,7 +168,7 @@ int run(int argc, char** argv)
 	const std::string name = fs::path(input).stem().string();
 
 	// Where the plan starts and ends, checked before any work.
-	auto requested = requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
+	auto requested = lvf::apps::requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 	const auto truth = lvf::apps::loadRunTruth(input);
@@ -267,7 +177,7 @@ int run(int argc, char** argv)
 	const auto prior = priorFor(config, argMap.getValue().empty() ? config.mapFile : argMap.getValue(), runLog);
 	const auto mapInTruth =
 		lvf::apps::mapFrameInTruth(truth, requested.worldStart, prior.ownMap.has_value(), runLog.steps.front());
-	if (mapInTruth) placeWorldEndpointsOnMap(requested, *mapInTruth);
+	if (mapInTruth) lvf::apps::placeWorldEndpointsOnMap(requested, *mapInTruth);
 
 	// 1-2. Localise every scan; accumulate both grids at the estimates.
 	mrpt::random::getRandomGenerator().randomize(argSeed.getValue());
@@ -282,7 +192,7 @@ int run(int argc, char** argv)
 	ends.goal = requested.goal.value_or(TPoint2D(poses.back().pose.x(), poses.back().pose.y()));
 	std::vector<lvf::apps::MapPlan> plans{{"laser", &grids.laser(), {}, {0, 0, 255}}};
 	if (grids.fusedScans()) plans.push_back({"fused", &grids.fused(), {}, {0, 160, 0}});
-	planOnEachGrid(plans, ends, requested, config.planner);
+	lvf::apps::planOnEachGrid(plans, ends, requested, config.planner);
 
 	// Outputs, staged until everything worked.
 	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
