@@ -573,7 +573,9 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --config algorithm.ini", "algorithm.ini: [PF_options] PF_algorithm: 7 is out of range [0, 3]"},
 		{"--input " + sample + " --config resampling.ini",
 			"resampling.ini: [PF_options] resamplingMethod: must be 0 (multinomial) with adaptiveSampleSize = 1"},
-		{"--input " + sample + " --config likelihood.ini", "likelihood.ini: MRPT's particle filter or maps refuse it: Invalid value 'lmBogus'"},
+		{"--input " + sample + " --config likelihood.ini",
+			"likelihood.ini: [MetricMap_occupancyGrid_00_likelihoodOpts] likelihoodMethod: 'lmBogus' is not one of MRPT's "
+			"likelihood methods (lmMeanInformation, lmRayTracing,"},
 		{"--input " + sample + " --config cell.ini",
 			"cell.ini: [MetricMap_occupancyGrid_00_creationOpts] resolution: 0 is out of range"},
 		{"--input " + sample + " --config method.ini",

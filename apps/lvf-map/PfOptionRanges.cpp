@@ -3,6 +3,9 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <mrpt/core/format.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/system/string_utils.h>
+#include <mrpt/typemeta/TEnumType.h>
 
 namespace lvf::apps
 {
@@ -50,13 +53,31 @@ void requireOdometryFloors(const mrpt::config::CConfigFileBase& user)
 	ini.real("minStdPHI", 5, 0, 180);
 }
 
-/** MRPT's TLikelihoodMethod by name (MRPT checks those) or by number, which
- * MRPT casts unchecked: lmMeanInformation (0) .. lmConsensusOWA (6). */
+/** MRPT's TLikelihoodMethod by number (MRPT casts it unchecked) or by name,
+ * asked of MRPT's own enum table: MRPT's loader refuses an unknown name by
+ * throwing after it allocated the map's definition, which then leaks. */
 void requireLikelihoodMethod(lvf::common::IniSection& likelihood)
 {
-	const std::string method = likelihood.text("likelihoodMethod", "");
-	const bool number = !method.empty() && method.find_first_not_of("+-0123456789") == std::string::npos;
-	if (number) likelihood.integer("likelihoodMethod", 4, 0, 6);
+	using Methods = mrpt::typemeta::TEnumType<mrpt::maps::COccupancyGridMap2D::TLikelihoodMethod>;
+	const std::string method = mrpt::system::trim(likelihood.text("likelihoodMethod", ""));
+	if (method.empty()) return;
+	if (method.find_first_not_of("+-0123456789") == std::string::npos)
+	{
+		likelihood.integer("likelihoodMethod", 4, 0, 6);  // lmMeanInformation .. lmConsensusOWA
+		return;
+	}
+	try
+	{
+		Methods::name2value(method);
+	}
+	catch (const std::exception&)
+	{
+		std::string names;
+		for (int m = 0; m <= 6; m++)
+			names += (m ? ", " : "") + Methods::value2name(static_cast<mrpt::maps::COccupancyGridMap2D::TLikelihoodMethod>(m));
+		throw InputError(likelihood.sourceName(), "[" + likelihood.section() + "] likelihoodMethod",
+			"'" + method + "' is not one of MRPT's likelihood methods (" + names + ", or 0-6)");
+	}
 }
 
 /** Each occupancy grid's insertion and likelihood numbers that lvf-map's
