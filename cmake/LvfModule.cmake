@@ -6,8 +6,11 @@ function(lvf_set_compile_options target)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
   if(LVF_SANITIZE OR LVF_FUZZ)
-    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
-    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    # Undefined behaviour aborts (as an address error does) instead of
+    # printing and going on, so that a test or a fuzz run that meets it fails.
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=undefined
+      -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined -fno-sanitize-recover=undefined)
     # GCC 12's -Wmaybe-uninitialized misfires inside libstdc++'s std::function
     # and std::regex once the sanitizers instrument them
     # (test_lvf_simulate_cli): kept a warning, not an error, in these builds.

@@ -465,10 +465,15 @@ TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnARealLaserLog)
 	ASSERT_EQ(reference.size(), 300u);
 	ASSERT_EQ(poses.size(), 300u);
 	const auto a = compareSteps(poses, reference, 0);
-	std::printf("mit-csail (300 scans) against pf-localization: median %.3f m (max %.3f m), heading %.2f deg\n",
-				a.medianPosition, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
+	std::printf(
+		"mit-csail (300 scans) against pf-localization: median %.3f m (90 %% within %.3f m, max %.3f m), heading %.2f "
+		"deg\n", a.medianPosition, a.position90, a.maxPosition, mrpt::RAD2DEG(a.medianHeading));
 	EXPECT_LT(a.medianPosition, 0.05);
-	EXPECT_LT(a.maxPosition, 0.50);
+	// Not the largest step: pf-localization seeds its random numbers from
+	// the clock, and its largest step off ours was 0.10-0.38 m over eight
+	// runs (2026-12-06) and 0.71 m in another, while the 90th percentile
+	// stayed at 0.033-0.041 m.
+	EXPECT_LT(a.position90, 0.10);
 	EXPECT_LT(a.medianHeading, mrpt::DEG2RAD(1.0));
 }
 
