@@ -266,7 +266,7 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 {
 	// Frame k is spoiled in way k; frame 0 and the last one are good.
-	const auto log = writeLog("spoilt.rawlog", 13, [](size_t k, CStereoLaserSimulator::Frame& f) {
+	const auto log = writeLog("spoilt.rawlog", 14, [](size_t k, CStereoLaserSimulator::Frame& f) {
 		auto& s = *f.stereo;
 		auto& scan = *f.scan;
 		switch (k)
@@ -293,6 +293,9 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 			case 9: s.leftCamera.distortion = mrpt::img::DistortionModel::kannala_brandt; break;
 			case 10: s.rightCameraPose.m_quat.r(5.0); break;  // MRPT would throw converting it
 			case 11: s.cameraPose.x(std::numeric_limits<double>::quiet_NaN()); break;
+			// A laser mounted 1e180 m off (fuzz_fusion_frame): MRPT's grid
+			// would assert (abort) growing to take it in.
+			case 12: scan.sensorPose.y(1e180); break;
 			default: break;
 		}
 	});
@@ -312,14 +315,16 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"cv::fisheye, or a plumb_bob calibration (laser only)",
 		"frame 10: rightCameraPose: quaternion is not a rotation (squared norm 25): (x y z qr qx qy qz) = (0.12 0 0 5 0 0 0) (laser only)",
 		"frame 11: cameraPose: not a finite pose: (x y z qr qx qy qz) = (nan ",
+		"frame 12: scan LASER: its pose (odometry and sensor pose) is not finite or lies more than 1000 m outside the "
+		"grids: left out of them",
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
 	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
-	EXPECT_NE(r.out.find("13 fused frames"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("14 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
-	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 13);
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 14);
 }
 
 TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)

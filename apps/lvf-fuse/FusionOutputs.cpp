@@ -1,7 +1,7 @@
 #include "FusionOutputs.h"
 
+#include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
-
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -118,14 +118,22 @@ void FusionOutputs::addPoints(
 	for (const auto& p : r.remembered) write(p, "remembered");
 }
 
-void FusionOutputs::add(
+bool FusionOutputs::add(
 	size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
 	const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
 	const std::optional<FrameTruth>& truth)
 {
 	const mrpt::poses::CPose3D pose(odometry);
-	m_laserGrid.insertObservation(laser, pose);
-	m_fusedGrid.insertObservation(*r.fused, pose);
+	if (m_inserted == 0 && std::isfinite(odometry.x()) && std::isfinite(odometry.y()))
+		for (auto* grid : {&m_laserGrid, &m_fusedGrid}) lvf::common::startGridAround(*grid, odometry.x(), odometry.y());
+	const bool insertable = lvf::common::insertableInGrid(m_laserGrid, pose, laser) &&
+		lvf::common::insertableInGrid(m_fusedGrid, pose, *r.fused);
+	if (insertable)
+	{
+		m_laserGrid.insertObservation(laser, pose);
+		m_fusedGrid.insertObservation(*r.fused, pose);
+		m_inserted++;
+	}
 
 	const size_t shortened = r.shortenedBearings(laser);
 	const auto bridged = static_cast<size_t>(std::count(r.bridged.begin(), r.bridged.end(), true));
@@ -149,6 +157,7 @@ void FusionOutputs::add(
 		m_csv << ",,,,,,,\n";
 	addBearings(frame, laser, r, truth);
 	if (m_pointsCsv.is_open()) addPoints(frame, laser, r);
+	return insertable;
 }
 
 void FusionOutputs::close()

@@ -41,8 +41,10 @@ class FusionOutputs
 	FusionOutputs(
 		lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution, bool writePoints = false);
 
-	/** Inserts both scans at the odometry pose and logs the frame's figures. */
-	void add(
+	/** Inserts both scans at the odometry pose and logs the frame's figures.
+	 * False when the scans' pose could not go into a grid
+	 * (lvf::common::insertableInGrid): the frame is logged, not inserted. */
+	bool add(
 		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,
 		const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
 		const std::optional<FrameTruth>& truth);
@@ -52,6 +54,7 @@ class FusionOutputs
 	lvf::common::StagedOutputFiles& m_files;
 	std::string m_name;
 	mrpt::maps::COccupancyGridMap2D m_laserGrid, m_fusedGrid;
+	size_t m_inserted = 0;	//!< frames in the grids
 	std::ofstream m_csv, m_bearingsCsv, m_pointsCsv;  // the last open only if asked for
 
 	void addBearings(

@@ -12,6 +12,7 @@
 
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/IniSection.h>
+#include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/RawlogWriter.h>
@@ -265,7 +266,10 @@ int run(int argc, char** argv)
 
 		const auto frameTruth = lvf::apps::scoreAgainstTruth(truth, f, r, options);
 		if (frameTruth) tally.score.add(frameTruth->score), tally.scored++;
-		outputs.add(k, *f.scan, r, f.odometry, frameTruth);
+		if (!outputs.add(k, *f.scan, r, f.odometry, frameTruth))
+			std::cerr << kApp << ": warning: " << record << ": scan " << f.scan->sensorLabel
+					  << ": its pose (odometry and sensor pose) is not finite or lies more than "
+					  << lvf::common::kMaxGridGrowth << " m outside the grids: left out of them" << std::endl;
 		lvf::apps::FrameStream::Results results{r.fused};
 		if (!r.left.empty() && a.evalEvery > 0 && k % a.evalEvery == 0)
 			results.push_back(lvf::apps::evaluationImage(r, f.scan->timestamp));

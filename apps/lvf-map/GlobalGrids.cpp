@@ -1,5 +1,6 @@
 #include "GlobalGrids.h"
 
+#include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/LaserRange.h>
 #include <opencv2/imgproc.hpp>
 
@@ -7,13 +8,6 @@
 
 namespace lvf::apps
 {
-void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y)
-{
-	grid.setSize(
-		static_cast<float>(x - 1), static_cast<float>(x + 1), static_cast<float>(y - 1), static_cast<float>(y + 1),
-		grid.getResolution());
-}
-
 GlobalGrids::GlobalGrids(double resolution, int visualMinHits)
 	: m_laser(-1, 1, -1, 1, static_cast<float>(resolution)),
 	  m_fused(-1, 1, -1, 1, static_cast<float>(resolution)),
@@ -22,14 +16,16 @@ GlobalGrids::GlobalGrids(double resolution, int visualMinHits)
 {
 }
 
-void GlobalGrids::add(
+bool GlobalGrids::add(
 	const mrpt::obs::CObservation2DRangeScan& laser, const mrpt::obs::CObservation2DRangeScan* fused,
 	const mrpt::poses::CPose2D& pose)
 {
-	if (m_laserScans == 0)
-		for (auto* g : {&m_laser, &m_fused}) startGridAround(*g, pose.x(), pose.y());
-	m_laserScans++;
 	const mrpt::poses::CPose3D robot(pose);
+	if (m_laserScans == 0)
+		for (auto* g : {&m_laser, &m_fused}) lvf::common::startGridAround(*g, pose.x(), pose.y());
+	if (!lvf::common::insertableInGrid(m_laser, robot, laser) || (fused && !lvf::common::insertableInGrid(m_fused, robot, *fused)))
+		return false;
+	m_laserScans++;
 	m_laser.insertObservation(laser, robot);
 	if (fused)
 	{
@@ -48,6 +44,7 @@ void GlobalGrids::add(
 						  static_cast<int>(std::floor(end.y / m_resolution))}]++;
 		}
 	}
+	return true;
 }
 
 void GlobalGrids::finish()

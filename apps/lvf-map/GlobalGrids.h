@@ -22,19 +22,13 @@
 
 namespace lvf::apps
 {
-/** Empties `grid` to 2 m x 2 m round (x, y), at its own resolution. MRPT's
- * grids grow to take in what is inserted but never shrink, and a new or
- * cleared one spans 20 m round the origin: a run whose odometry starts far
- * from it (the Freiburg logs: mit-csail at x = 577 m) would get a grid
- * reaching back to the origin. Grids started where the run starts cover
- * where it went and no more. */
-void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y);
-
 class GlobalGrids
 {
    public:
 	GlobalGrids(double resolution, int visualMinHits);
-	void add(
+	/** False, and nothing added, when the scan's pose could not go into a
+	 * grid (lvf::common::insertableInGrid). */
+	bool add(
 		const mrpt::obs::CObservation2DRangeScan& laser, const mrpt::obs::CObservation2DRangeScan* fused,
 		const mrpt::poses::CPose2D& pose);
 	/** Marks the visual obstacle cells occupied; call once, after every add(). */

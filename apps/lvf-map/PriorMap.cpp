@@ -3,6 +3,7 @@
 #include "GlobalGrids.h"
 #include "SerialisedFile.h"
 
+#include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/InputError.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -70,7 +71,7 @@ void loadSimpleMap(const mrpt::maps::CSimpleMap& simple, mrpt::maps::CMultiMetri
 	map.clear();
 	const mrpt::poses::CPose3D first = simple.getAsPair(0).pose->getMeanVal();
 	for (size_t i = 0; auto grid = map.mapByClass<mrpt::maps::COccupancyGridMap2D>(i); i++)
-		startGridAround(*grid, first.x(), first.y());
+		lvf::common::startGridAround(*grid, first.x(), first.y());
 	for (const auto& keyframe : simple) keyframe.sf->insertObservationsInto(map, keyframe.pose->getMeanVal());
 }
 

@@ -16,6 +16,7 @@
 #include "RunReport.h"
 
 #include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
@@ -102,7 +103,11 @@ Localised localise(
 		if (priorGrid)
 			out.sharesOnMap.push_back(lvf::metrics::scanShareOnMap(
 				*step.laser, pose, *priorGrid, priorGrid->insertionOptions.maxDistanceInsertion));
-		grids.add(*step.laser, step.fused.get(), pose);
+		if (!grids.add(*step.laser, step.fused.get(), pose))
+			std::cerr << mrpt::format(
+				"%s: warning: scan %zu: its sensor pose on the robot at (%.3g, %.3g) is not finite or lies more than %.0f "
+				"m outside the maps: left out of them\n",
+				kApp.c_str(), k, pose.x(), pose.y(), lvf::common::kMaxGridGrowth);
 		if (!quiet) progress.update(k + 1);
 	}
 	grids.finish();

@@ -24,13 +24,16 @@ PixelAffine dotWithRay(const Eigen::Vector3d& n, double k, const RectifiedGeomet
 			k * (n.z() - n.x() * g.cx / g.f - n.y() * g.cy / g.f)};
 }
 
-/** Columns [lo, hi] of row v where g >= 0 (lo > hi: none). */
+/** Columns [lo, hi] of row v where g >= 0 (lo > hi: none). Clipping only
+ * narrows [0, last column], so a non-empty result lies inside the image. */
 void clipToNonNegative(const PixelAffine& g, double v, double& lo, double& hi)
 {
 	const double c = g.b * v + g.c;	 // g = a u + c on this row
 	if (std::abs(g.a) < 1e-15)
 	{
-		if (c < 0) lo = hi + 1;
+		// None. Not hi + 1: beyond 2^53 that equals hi (a far-off root of
+		// an earlier clip, from a corrupt calibration: fuzz_fusion_frame).
+		if (c < 0) lo = 1, hi = 0;
 		return;
 	}
 	const double root = -c / g.a;
