@@ -5,6 +5,7 @@
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -58,7 +59,9 @@ void printRunReport(
 	if ((truth.posesPath || truth.obstaclesPath) && !mapInTruth)
 		out << "  the truth beside the input has no pose at the first scan's time, which would place the map built "
 			   "from the run in the truth's frame: not compared\n";
-	if (mapInTruth && *mapInTruth != mrpt::poses::CPose2D())
+	// Said only where the frames differ (an observations-only log's odometry
+	// starts at the truth, up to rounding).
+	if (mapInTruth && (std::hypot(mapInTruth->x(), mapInTruth->y()) > 1e-3 || std::abs(mapInTruth->phi()) > 1e-4))
 		out << mrpt::format(
 			"  the map (in the run's odometry frame) lies at (%.3f m, %.3f m, %.2f deg) in the world's frame, by where "
 			"the first scan was taken: the world's start and target and the truth are placed on it\n",
