@@ -124,7 +124,7 @@ bool FusionOutputs::add(
 	const std::optional<FrameTruth>& truth)
 {
 	const mrpt::poses::CPose3D pose(odometry);
-	if (m_inserted == 0 && std::isfinite(odometry.x()) && std::isfinite(odometry.y()))
+	if (m_inserted == 0)
 		for (auto* grid : {&m_laserGrid, &m_fusedGrid}) lvf::common::startGridAround(*grid, odometry.x(), odometry.y());
 	const bool insertable = lvf::common::insertableInGrid(m_laserGrid, pose, laser) &&
 		lvf::common::insertableInGrid(m_fusedGrid, pose, *r.fused);

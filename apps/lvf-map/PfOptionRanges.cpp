@@ -58,12 +58,14 @@ void requireOdometryFloors(const mrpt::config::CConfigFileBase& user)
  * throwing after it allocated the map's definition, which then leaks. */
 void requireLikelihoodMethod(lvf::common::IniSection& likelihood)
 {
-	using Methods = mrpt::typemeta::TEnumType<mrpt::maps::COccupancyGridMap2D::TLikelihoodMethod>;
+	using Grid = mrpt::maps::COccupancyGridMap2D;
+	using Methods = mrpt::typemeta::TEnumType<Grid::TLikelihoodMethod>;
+	constexpr int first = Grid::lmMeanInformation, last = Grid::lmConsensusOWA;
 	const std::string method = mrpt::system::trim(likelihood.text("likelihoodMethod", ""));
 	if (method.empty()) return;
 	if (method.find_first_not_of("+-0123456789") == std::string::npos)
 	{
-		likelihood.integer("likelihoodMethod", 4, 0, 6);  // lmMeanInformation .. lmConsensusOWA
+		likelihood.integer("likelihoodMethod", Grid::lmLikelihoodField_Thrun, first, last);
 		return;
 	}
 	try
@@ -73,10 +75,11 @@ void requireLikelihoodMethod(lvf::common::IniSection& likelihood)
 	catch (const std::exception&)
 	{
 		std::string names;
-		for (int m = 0; m <= 6; m++)
-			names += (m ? ", " : "") + Methods::value2name(static_cast<mrpt::maps::COccupancyGridMap2D::TLikelihoodMethod>(m));
+		for (int m = first; m <= last; m++)
+			names += (m == first ? "" : ", ") + Methods::value2name(static_cast<Grid::TLikelihoodMethod>(m));
 		throw InputError(likelihood.sourceName(), "[" + likelihood.section() + "] likelihoodMethod",
-			"'" + method + "' is not one of MRPT's likelihood methods (" + names + ", or 0-6)");
+			"'" + method + "' is not one of MRPT's likelihood methods (" + names +
+				mrpt::format(", or %d-%d)", first, last));
 	}
 }
 

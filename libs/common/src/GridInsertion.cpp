@@ -7,6 +7,7 @@ namespace lvf::common
 {
 void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y)
 {
+	if (!std::isfinite(x) || !std::isfinite(y)) return;
 	grid.setSize(
 		static_cast<float>(x - 1), static_cast<float>(x + 1), static_cast<float>(y - 1), static_cast<float>(y + 1),
 		grid.getResolution());

@@ -14,7 +14,8 @@ namespace lvf::common
 /** Empties `grid` to 2 m x 2 m round (x, y), at its own resolution. A new or
  * cleared MRPT grid spans 20 m round the origin; the Freiburg logs'
  * odometry starts hundreds of metres out (mit-csail at x = 577 m). Grids
- * started where the run starts cover where it went and no more. */
+ * started where the run starts cover where it went and no more. A point
+ * that is not finite leaves the grid as it is. */
 void startGridAround(mrpt::maps::COccupancyGridMap2D& grid, double x, double y);
 
 /** How far past its current extent one scan may make a grid grow [m]. */
