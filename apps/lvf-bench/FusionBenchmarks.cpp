@@ -5,8 +5,10 @@
 // of each method, and recall / phantom rate / range error of each against
 // the truth scans (printed after the benchmarks, FusionBenchmarks.h).
 
-#include "MethodRuns.h"
 #include "FusionBenchmarks.h"
+
+#include "MethodRuns.h"
+#include "SimulatedFrames.h"
 #include "StageMedians.h"
 
 #include <benchmark/benchmark.h>
@@ -29,38 +31,26 @@ namespace
 /** The box room's frames, simulated once, with what every method needs. */
 struct FusionFixture
 {
-	std::vector<CStereoLaserSimulator::Frame> frames;
-	std::vector<cv::Mat1b> left, right;	 // rectified grey
-	lvf::evaluation::RectifiedGeometry geometry;
-	lvf::fusion::CLaserStereoFusion::TOptions options;
-
+	static lvf::simulation::World boxRoom()
+	{
+		return loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
+	}
 	/** The same frames seen by a rig that needs rectifying (the right
 	 * camera toed in and rolled, both with a lens): what the remap costs. */
-	std::vector<CStereoLaserSimulator::Frame> framesToRectify;
-
-	FusionFixture()
+	static CStereoLaserSimulator::TOptions rigToRectify()
 	{
-		World world = loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
-		CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
 		CStereoLaserSimulator::TOptions misaligned;
 		misaligned.stereo.dist = {-0.15, 0.03, 0.001, -0.001, 0};
 		misaligned.stereo.rightYawDeg = 1.5;
 		misaligned.stereo.rightRollDeg = 0.7;
-		CStereoLaserSimulator simToRectify(world, misaligned);
-		lvf::evaluation::RectifiedStereo stereo;
-		for (size_t k = 0; k < sim.frameCount(); k++)
-		{
-			frames.push_back(sim.simulateNextFrame(true));	// the depth: for the seen truth scan
-			frames.back().leftDepth.release();
-			stereo.prepare(*frames.back().stereo, "frame");
-			cv::Mat1b l, r;
-			stereo.rectify(*frames.back().stereo, l, r);
-			left.push_back(l.clone());
-			right.push_back(r.clone());
-			framesToRectify.push_back(simToRectify.simulateNextFrame(false));
-		}
-		geometry = stereo.geometry();
+		return misaligned;
 	}
+
+	SimulatedFrames run{boxRoom()};
+	SimulatedFrames runToRectify{boxRoom(), rigToRectify()};
+	const std::vector<CStereoLaserSimulator::Frame>& frames = run.frames;
+	lvf::fusion::CLaserStereoFusion::TOptions options;
+
 	static FusionFixture& get()
 	{
 		static FusionFixture f;
@@ -72,8 +62,7 @@ struct FusionFixture
 		size_t k, lvf::depth::DenseMatcher m, lvf::bench::StageMedians* times = nullptr,
 		const std::string& name = {}) const
 	{
-		return denseFusedScan(
-			left[k], right[k], geometry, options, options.depth.zMin, *frames[k].scan, m, times, name);
+		return run.dense(k, m, options, times, name);
 	}
 };
 
@@ -158,7 +147,7 @@ void printStageMedians(int passes)
 			const auto& frame = f.frames[k];
 			for (size_t i = 0; i < fusions.size(); i++)
 				recordFusionTimes(medians, variants[i].first, fusions[i].process(*frame.scan, *frame.stereo, "frame", frame.odometry).times);
-			const auto& turned = f.framesToRectify[k];
+			const auto& turned = f.runToRectify.frames[k];
 			recordFusionTimes(medians, toRectify, fusionToRectify.process(*turned.scan, *turned.stereo, "frame", turned.odometry).times);
 			f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName);
 			f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName);
@@ -170,7 +159,7 @@ void printStageMedians(int passes)
 				});
 		}
 	std::cout << "\nMedian time per frame and stage [ms] on the box room (" << passes << " x "
-			  << f.frames.size() << " frames, " << f.left.front().cols << "x" << f.left.front().rows
+			  << f.frames.size() << " frames, " << f.run.left.front().cols << "x" << f.run.left.front().rows
 			  << ", one thread unless said):\n";
 	medians.print(std::cout, kSgbmName);
 	std::cout << std::fixed << std::setprecision(2) << "  (a rig to rectify: its right camera toed in 1.5 deg and rolled 0.7, "
@@ -194,12 +183,7 @@ void printAccuracy()
 	for (size_t k = 0; k < f.frames.size(); k++)
 	{
 		const auto& frame = f.frames[k];
-		const auto inView = lvf::metrics::bearingsInView(
-			*frame.scan, frame.truthScan, *frame.stereo, f.options.band, f.options.depth.zMax);
-		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) {
-			return lvf::metrics::scoreFusedScan(
-				*frame.scan, fused, frame.truthScan, inView, f.options.depth.zMax, &frame.seenTruthScan);
-		};
+		auto score = [&](const mrpt::obs::CObservation2DRangeScan& fused) { return f.run.score(k, fused, f.options); };
 		scores[kFusionName].add(score(*fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry).fused));
 		scores[kSgbmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::SemiGlobal)));
 		scores[kBmName].add(score(*f.dense(k, lvf::depth::DenseMatcher::Block)));
@@ -207,12 +191,7 @@ void printAccuracy()
 	}
 	std::cout << "\nAccuracy on the box room (" << f.frames.size()
 			  << " frames, against the simulator's truth scans):\n";
-	for (const auto& [name, s] : scores)
-		std::cout << std::fixed << std::setprecision(3) << "  " << std::setw(22) << std::left << name
-				  << " recall " << s.recall() << " (seen by both cameras " << s.seenRecall() << ")  phantom rate "
-				  << s.phantomRate()
-				  << "  median range error " << s.rangeErrorMedian << " m (hidden "
-				  << s.hiddenRangeErrorMedian << " m)\n";
+	for (const auto& [name, s] : scores) printScoreLine(std::cout, name, s);
 }
 
 }  // namespace lvf::bench

@@ -15,6 +15,8 @@
 //               phantom rate / range error of each against the truth scans.
 //   Real images the Middlebury scenes with a floor (RealScenes.cpp): the
 //               fusion, SGBM and BM per scene, time and accuracy.
+//   Seeded rooms with --random-rooms FIRST-LAST (SeededRooms.cpp): the box
+//               room's comparison repeated on lvf-simulate's random rooms.
 //   VFH         one VFH+ cycle on the default window of a 10 cm grid, and
 //               CHolonomicVFH against MRPT's CHolonomicVFF / CHolonomicND on
 //               the same TP-obstacles.
@@ -26,15 +28,20 @@
 
 #include "FusionBenchmarks.h"
 #include "RealScenes.h"
+#include "SeededRooms.h"
 
 #include <benchmark/benchmark.h>
+#include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProcessMemory.h>
 #include <opencv2/core/utility.hpp>
 
 #include <iomanip>
 #include <iostream>
 #include <cstring>
+#include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <unistd.h>
@@ -71,25 +78,70 @@ const std::vector<std::tuple<std::string, std::string, std::string>> kComparison
 	{"BM_Holonomic_VFH", "BM_Holonomic_ND", "holonomic step, CHolonomicVFH vs MRPT's CHolonomicND"},
 };
 
-/** Takes lvf-bench's own option out of argv (Google Benchmark refuses what
- * it does not know): `--middlebury DIR` or `--middlebury=DIR`, the folder
- * of Middlebury scenes; its default is ../shared/data/middlebury. */
-std::string takeMiddleburyOption(int& argc, char** argv)
+/** lvf-bench's own options, which Google Benchmark would refuse. */
+struct OwnOptions
 {
-	std::string dir = LVF_MIDDLEBURY_DIR;
+	std::string middlebury = LVF_MIDDLEBURY_DIR;  //!< folder of Middlebury scenes
+	std::optional<std::pair<uint32_t, uint32_t>> randomRooms;  //!< seeds, first and last
+};
+
+/** "SEED" or "FIRST-LAST" (0 <= FIRST <= LAST < 2^32). */
+std::pair<uint32_t, uint32_t> parseSeedRange(const std::string& text)
+{
+	const auto dash = text.find('-');
+	auto seed = [&](const std::string& part) {
+		size_t used = 0;
+		unsigned long long value = 0;
+		try
+		{
+			if (part.empty() || part.front() == '-' || part.front() == '+') throw std::invalid_argument(part);
+			value = std::stoull(part, &used);
+		}
+		catch (const std::exception&)
+		{
+			used = 0;
+		}
+		if (used != part.size() || used == 0 || value > std::numeric_limits<uint32_t>::max())
+			throw lvf::common::InputError(
+				"--random-rooms", text, "give a seed or FIRST-LAST, whole numbers from 0 to 4294967295");
+		return static_cast<uint32_t>(value);
+	};
+	const auto range = dash == std::string::npos
+		? std::pair{seed(text), seed(text)}
+		: std::pair{seed(text.substr(0, dash)), seed(text.substr(dash + 1))};
+	if (range.first > range.second)
+		throw lvf::common::InputError("--random-rooms", text, "the first seed is after the last");
+	return range;
+}
+
+/** Takes lvf-bench's options out of argv, leaving Google Benchmark's:
+ * `--middlebury DIR` and `--random-rooms FIRST-LAST`, each also as
+ * `--name=VALUE`. */
+OwnOptions takeOwnOptions(int& argc, char** argv)
+{
+	OwnOptions own;
 	int kept = 1;
 	for (int i = 1; i < argc; i++)
 	{
 		const std::string arg = argv[i];
-		if (arg == "--middlebury" && i + 1 < argc)
-			dir = argv[++i];
-		else if (arg.rfind("--middlebury=", 0) == 0)
-			dir = arg.substr(std::strlen("--middlebury="));
+		auto value = [&](const std::string& name) -> std::optional<std::string> {
+			if (arg == name)
+			{
+				if (i + 1 >= argc) throw lvf::common::InputError(name, "", "needs a value");
+				return std::string(argv[++i]);
+			}
+			if (arg.rfind(name + "=", 0) == 0) return arg.substr(name.size() + 1);
+			return std::nullopt;
+		};
+		if (const auto dir = value("--middlebury"))
+			own.middlebury = *dir;
+		else if (const auto seeds = value("--random-rooms"))
+			own.randomRooms = parseSeedRange(*seeds);
 		else
 			argv[kept++] = argv[i];
 	}
 	argc = kept;
-	return dir;
+	return own;
 }
 
 }  // namespace
@@ -98,12 +150,24 @@ int main(int argc, char** argv)
 {
 	cv::setNumThreads(1);  // single-thread figures, for every method alike
 	lvf::common::retainLargeAllocations();	// as the apps do (ProcessMemory.h)
-	const std::string middlebury = takeMiddleburyOption(argc, argv);
+	OwnOptions own;
+	try
+	{
+		own = takeOwnOptions(argc, argv);
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		std::cerr << "lvf-bench: " << e.what() << "\n";
+		return lvf::common::kExitBadInput;
+	}
 	for (int i = 1; i < argc; i++)
 		if (std::strcmp(argv[i], "--help") == 0)
-			std::cout << "lvf-bench [--middlebury DIR] [Google Benchmark's options below]\n"
-					  << "  --middlebury DIR  Middlebury 2014 scenes for the real-image table (default "
-					  << LVF_MIDDLEBURY_DIR << ")\n\n";
+			std::cout << "lvf-bench [--middlebury DIR] [--random-rooms FIRST-LAST] [Google Benchmark's options below]\n"
+					  << "  --middlebury DIR           Middlebury 2014 scenes for the real-image table (default "
+					  << LVF_MIDDLEBURY_DIR << ")\n"
+					  << "  --random-rooms FIRST-LAST  also compare the fusion with SGBM and BM on these seeded\n"
+					  << "                             random rooms (lvf-simulate --random-world SEED's), time and\n"
+					  << "                             accuracy over all their frames; e.g. 201-230\n\n";
 	benchmark::Initialize(&argc, argv);
 	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 	RecordingReporter reporter;
@@ -130,7 +194,8 @@ int main(int argc, char** argv)
 		std::cout << "  ... with every cell of the window occupied: " << full->second << " ms\n";
 	lvf::bench::printStageMedians(3);
 	lvf::bench::printAccuracy();
-	lvf::bench::printRealScenes(middlebury, 5);
+	lvf::bench::printRealScenes(own.middlebury, 5);
+	if (own.randomRooms) lvf::bench::printSeededRooms(own.randomRooms->first, own.randomRooms->second, 3);
 	benchmark::Shutdown();
 	return 0;
 }
