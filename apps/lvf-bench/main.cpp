@@ -26,6 +26,7 @@
 // the stage table: the fusion and SGBM again with OpenCV's threads on every
 // core (both split their rows among them).
 
+#include "BenchOptions.h"
 #include "FusionBenchmarks.h"
 #include "RealScenes.h"
 #include "SeededRooms.h"
@@ -39,9 +40,7 @@
 #include <iomanip>
 #include <iostream>
 #include <cstring>
-#include <limits>
 #include <map>
-#include <optional>
 #include <string>
 #include <tuple>
 #include <unistd.h>
@@ -78,82 +77,16 @@ const std::vector<std::tuple<std::string, std::string, std::string>> kComparison
 	{"BM_Holonomic_VFH", "BM_Holonomic_ND", "holonomic step, CHolonomicVFH vs MRPT's CHolonomicND"},
 };
 
-/** lvf-bench's own options, which Google Benchmark would refuse. */
-struct OwnOptions
-{
-	std::string middlebury = LVF_MIDDLEBURY_DIR;  //!< folder of Middlebury scenes
-	std::optional<std::pair<uint32_t, uint32_t>> randomRooms;  //!< seeds, first and last
-};
-
-/** "SEED" or "FIRST-LAST" (0 <= FIRST <= LAST < 2^32). */
-std::pair<uint32_t, uint32_t> parseSeedRange(const std::string& text)
-{
-	const auto dash = text.find('-');
-	auto seed = [&](const std::string& part) {
-		size_t used = 0;
-		unsigned long long value = 0;
-		try
-		{
-			if (part.empty() || part.front() == '-' || part.front() == '+') throw std::invalid_argument(part);
-			value = std::stoull(part, &used);
-		}
-		catch (const std::exception&)
-		{
-			used = 0;
-		}
-		if (used != part.size() || used == 0 || value > std::numeric_limits<uint32_t>::max())
-			throw lvf::common::InputError(
-				"--random-rooms", text, "give a seed or FIRST-LAST, whole numbers from 0 to 4294967295");
-		return static_cast<uint32_t>(value);
-	};
-	const auto range = dash == std::string::npos
-		? std::pair{seed(text), seed(text)}
-		: std::pair{seed(text.substr(0, dash)), seed(text.substr(dash + 1))};
-	if (range.first > range.second)
-		throw lvf::common::InputError("--random-rooms", text, "the first seed is after the last");
-	return range;
-}
-
-/** Takes lvf-bench's options out of argv, leaving Google Benchmark's:
- * `--middlebury DIR` and `--random-rooms FIRST-LAST`, each also as
- * `--name=VALUE`. */
-OwnOptions takeOwnOptions(int& argc, char** argv)
-{
-	OwnOptions own;
-	int kept = 1;
-	for (int i = 1; i < argc; i++)
-	{
-		const std::string arg = argv[i];
-		auto value = [&](const std::string& name) -> std::optional<std::string> {
-			if (arg == name)
-			{
-				if (i + 1 >= argc) throw lvf::common::InputError(name, "", "needs a value");
-				return std::string(argv[++i]);
-			}
-			if (arg.rfind(name + "=", 0) == 0) return arg.substr(name.size() + 1);
-			return std::nullopt;
-		};
-		if (const auto dir = value("--middlebury"))
-			own.middlebury = *dir;
-		else if (const auto seeds = value("--random-rooms"))
-			own.randomRooms = parseSeedRange(*seeds);
-		else
-			argv[kept++] = argv[i];
-	}
-	argc = kept;
-	return own;
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
 {
 	cv::setNumThreads(1);  // single-thread figures, for every method alike
 	lvf::common::retainLargeAllocations();	// as the apps do (ProcessMemory.h)
-	OwnOptions own;
+	lvf::bench::OwnOptions own;
 	try
 	{
-		own = takeOwnOptions(argc, argv);
+		own = lvf::bench::takeOwnOptions(argc, argv);
 	}
 	catch (const lvf::common::InputError& e)
 	{
@@ -161,15 +94,9 @@ int main(int argc, char** argv)
 		return lvf::common::kExitBadInput;
 	}
 	for (int i = 1; i < argc; i++)
-		if (std::strcmp(argv[i], "--help") == 0)
-			std::cout << "lvf-bench [--middlebury DIR] [--random-rooms FIRST-LAST] [Google Benchmark's options below]\n"
-					  << "  --middlebury DIR           Middlebury 2014 scenes for the real-image table (default "
-					  << LVF_MIDDLEBURY_DIR << ")\n"
-					  << "  --random-rooms FIRST-LAST  also compare the fusion with SGBM and BM on these seeded\n"
-					  << "                             random rooms (lvf-simulate --random-world SEED's), time and\n"
-					  << "                             accuracy over all their frames; e.g. 201-230\n\n";
+		if (std::strcmp(argv[i], "--help") == 0) lvf::bench::printOwnHelp(std::cout);
 	benchmark::Initialize(&argc, argv);
-	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+	if (benchmark::ReportUnrecognizedArguments(argc, argv)) return lvf::common::kExitBadInput;
 	RecordingReporter reporter;
 	benchmark::RunSpecifiedBenchmarks(&reporter);
 
