@@ -1,22 +1,12 @@
 #include "StageMedians.h"
 
+#include <lvfusion/common/Medians.h>
+
 #include <algorithm>
 #include <iomanip>
 
 namespace lvf::bench
 {
-namespace
-{
-double medianOf(std::vector<double> v)
-{
-	if (v.empty()) return 0;
-	const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-	std::nth_element(v.begin(), mid, v.end());
-	if (v.size() % 2) return *mid;
-	return 0.5 * (*mid + *std::max_element(v.begin(), mid));
-}
-}  // namespace
-
 void StageMedians::add(const std::string& method, const std::string& stage, double ms)
 {
 	if (!m_methods.count(method)) m_methodOrder.push_back(method);
@@ -30,7 +20,7 @@ double StageMedians::median(const std::string& method, const std::string& stage)
 	const auto m = m_methods.find(method);
 	if (m == m_methods.end()) return 0;
 	const auto s = m->second.perStage.find(stage);
-	return s == m->second.perStage.end() ? 0 : medianOf(s->second);
+	return s == m->second.perStage.end() ? 0 : lvf::common::median(s->second, 0);
 }
 
 double StageMedians::medianTotal(const std::string& method) const
@@ -44,7 +34,7 @@ double StageMedians::medianTotal(const std::string& method) const
 		totals.resize(std::max(totals.size(), samples.size()), 0.0);
 		for (size_t k = 0; k < samples.size(); k++) totals[k] += samples[k];
 	}
-	return medianOf(totals);
+	return lvf::common::median(totals, 0);
 }
 
 void StageMedians::print(std::ostream& out, const std::string& baseline, const std::string& indent) const

@@ -18,6 +18,7 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
@@ -130,9 +131,7 @@ std::optional<ScansOnMap> summariseScansOnMap(const std::vector<double>& shares)
 {
 	if (shares.empty()) return std::nullopt;
 	ScansOnMap s;
-	std::vector<double> sorted = shares;
-	std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-	s.median = sorted[sorted.size() / 2];
+	s.median = lvf::common::upperMedian(shares, 0.0);
 	s.total = shares.size();
 	for (size_t k = 0; k < shares.size(); k++)
 		if (shares[k] < 0.5)

@@ -1,6 +1,8 @@
 // PieceBuilder's passes (PieceBuilder.h says what each is for).
 #include "PieceBuilder.h"
 
+#include <lvfusion/common/Medians.h>
+
 namespace lvf::lines::detail
 {
 void PieceBuilder::splitIepf(size_t a, size_t b, size_t cluster, std::vector<Piece>& out) const
@@ -51,9 +53,7 @@ double PieceBuilder::localSpacing(const Piece& a, const Piece& b) const
 	};
 	steps(a.last, a.first, false);
 	steps(b.first, b.last, true);
-	if (d.empty()) return 0;
-	std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-	return d[d.size() / 2];
+	return lvf::common::upperMedian(d, 0.0);
 }
 
 void PieceBuilder::mergePieces(std::vector<Piece>& pieces, bool smallToo)
@@ -266,9 +266,7 @@ double PieceBuilder::noiseLevel(const std::vector<Piece>& pieces) const
 			rms.push_back(fitLine(p.moments).rmsResidual * std::sqrt(n / (n - 2)));
 		}
 	// No piece to tell: assume splitDistance is 3 std, as documented.
-	if (rms.empty()) return m_o.splitDistance / 3;
-	std::nth_element(rms.begin(), rms.begin() + rms.size() / 2, rms.end());
-	return rms[rms.size() / 2];
+	return lvf::common::upperMedian(rms, m_o.splitDistance / 3);
 }
 
 void PieceBuilder::trimEnds(std::vector<Piece>& pieces, bool keep)

@@ -1,4 +1,5 @@
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/Medians.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <mrpt/core/format.h>
 #include <mrpt/math/wrap2pi.h>
@@ -10,16 +11,6 @@
 
 namespace lvf::metrics
 {
-namespace
-{
-double median(std::vector<double> v)
-{
-	if (v.empty()) return NAN;
-	std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-	return v[v.size() / 2];
-}
-}  // namespace
-
 std::vector<StampedPose> readPoseFile(const std::string& path)
 {
 	lvf::common::requireInputFile(path, "pose file");
@@ -72,8 +63,8 @@ TrajectoryError compareTrajectories(
 	}
 	TrajectoryError err;
 	err.matched = position.size();
-	err.medianPosition = median(position);
-	err.medianHeading = median(heading);
+	err.medianPosition = lvf::common::upperMedian(position, double(NAN));
+	err.medianHeading = lvf::common::upperMedian(heading, double(NAN));
 	err.maxPosition = position.empty() ? NAN : *std::max_element(position.begin(), position.end());
 	return err;
 }

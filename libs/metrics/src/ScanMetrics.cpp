@@ -1,4 +1,5 @@
 #include <lvfusion/common/LaserRange.h>
+#include <lvfusion/common/Medians.h>
 #include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 
@@ -61,16 +62,6 @@ std::vector<bool> hiddenBearings(
 
 namespace lvf::metrics
 {
-namespace
-{
-double median(std::vector<float> v)
-{
-	if (v.empty()) return 0;
-	std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-	return v[v.size() / 2];
-}
-}  // namespace
-
 void FusionScore::add(const FusionScore& o)
 {
 	inView += o.inView;
@@ -82,8 +73,8 @@ void FusionScore::add(const FusionScore& o)
 	seenRecalled += o.seenRecalled;
 	errors.insert(errors.end(), o.errors.begin(), o.errors.end());
 	hiddenErrors.insert(hiddenErrors.end(), o.hiddenErrors.begin(), o.hiddenErrors.end());
-	rangeErrorMedian = median(errors);
-	hiddenRangeErrorMedian = median(hiddenErrors);
+	rangeErrorMedian = lvf::common::upperMedian(errors, 0.f);
+	hiddenRangeErrorMedian = lvf::common::upperMedian(hiddenErrors, 0.f);
 }
 
 FusionScore scoreFusedScan(
@@ -120,8 +111,8 @@ FusionScore scoreFusedScan(
 			s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
 		}
 	}
-	s.rangeErrorMedian = median(s.errors);
-	s.hiddenRangeErrorMedian = median(s.hiddenErrors);
+	s.rangeErrorMedian = lvf::common::upperMedian(s.errors, 0.f);
+	s.hiddenRangeErrorMedian = lvf::common::upperMedian(s.hiddenErrors, 0.f);
 	return s;
 }
 }  // namespace lvf::metrics

@@ -1,6 +1,7 @@
 #include <lvfusion/middlebury/FloorFit.h>
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/Medians.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
 
@@ -90,11 +91,7 @@ FloorPlane fitFloor(const MiddleburyScene& scene, const FloorFitOptions& o)
 	double sumSq = 0;
 	for (double r : residuals) sumSq += r * r;
 	best.rms = residuals.empty() ? 0 : std::sqrt(sumSq / static_cast<double>(residuals.size()));
-	if (!residuals.empty())
-	{
-		std::nth_element(residuals.begin(), residuals.begin() + long(residuals.size() / 2), residuals.end());
-		best.medianResidual = residuals[residuals.size() / 2];
-	}
+	if (!residuals.empty()) best.medianResidual = lvf::common::upperMedian(residuals, 0.0);
 
 	const double fraction = pts.empty() ? 0 : double(best.inliers) / double(pts.size());
 	const std::string source = scene.file("disp0GT.pfm");
