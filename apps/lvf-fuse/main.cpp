@@ -17,6 +17,7 @@
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/common/ShippedFiles.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
@@ -37,7 +38,8 @@ using lvf::fusion::CLaserStereoFusion;
 namespace
 {
 const std::string kApp = "lvf-fuse";
-const std::string kDefaultInput = std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+const std::string kDefaultInput =
+	lvf::common::shippedFile("rawlog_samples/box_room.rawlog", std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog");
 
 /** The command line, checked. */
 struct Arguments

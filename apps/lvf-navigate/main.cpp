@@ -9,6 +9,7 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/vfh/CHolonomicVFH.h>
 #include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/common/ShippedFiles.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
@@ -34,8 +35,10 @@ namespace nav = lvf::navigation;
 namespace
 {
 const std::string kApp = "lvf-navigate";
-const std::string kDefaultConfig = std::string(LVF_SHARE_DIR) + "/config/navigate.ini";
-const std::string kDefaultWorld = std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml";
+const std::string kDefaultConfig =
+	lvf::common::shippedFile("config/navigate.ini", std::string(LVF_SHARE_DIR) + "/config/navigate.ini");
+const std::string kDefaultWorld =
+	lvf::common::shippedFile("worlds/box_room.yaml", std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
 const std::string kSensorsSection = "CStereoLaserSimulator", kFusionSection = "CLaserStereoFusion";
 
 /** Loads `options` from the sections of `file` it owns (the ones its

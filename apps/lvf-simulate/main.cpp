@@ -8,6 +8,7 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProgressBar.h>
+#include <lvfusion/common/ShippedFiles.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/metrics/ScanMetrics.h>
@@ -31,7 +32,7 @@ namespace
 {
 const std::string kApp = "lvf-simulate";
 const std::string kDefaultWorld =
-	std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml";
+	lvf::common::shippedFile("worlds/box_room.yaml", std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
 
 CStereoLaserSimulator::TOptions loadOptions(const std::string& path)
 {
@@ -122,8 +123,8 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argConfig(
 		"c", "config",
 		"Sensor configuration, MRPT INI; keys not given keep their defaults "
-		"(listed with --dump-config, shipped as " LVF_SHARE_DIR
-		"/config/sensors.ini)",
+		"(listed with --dump-config, shipped as " +
+			lvf::common::shippedFile("config/sensors.ini", std::string(LVF_SHARE_DIR) + "/config/sensors.ini") + ")",
 		false, "", "FILE.ini", cmd);
 	TCLAP::ValueArg<std::string> argOutdir(
 		"o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out",
