@@ -68,10 +68,15 @@ TEST_F(InstalledPackage, TheInstalledProgramsFindTheInstalledSamples)
 	EXPECT_TRUE(fs::exists(m_dir / "sim/box_room.rawlog"));
 
 	// MRPT's own tool loads the installed plugin (it says so only on failure).
+#if defined(__SANITIZE_ADDRESS__)
+	// (A sanitized plugin loads only into a sanitized process: MRPT's
+	// rawlog-edit is not one. test_plugin loads it into its own.)
+#else
 	const auto info = run(LVF_RAWLOG_EDIT, "--plugins '" + (m_prefix / "lib/liblvfusion.so").string() + "' --info -i '" +
 		sample.string() + "'");
 	ASSERT_EQ(info.status, 0) << info.err;
 	EXPECT_EQ((info.out + info.err).find("Error loading"), std::string::npos) << info.out << info.err;
+#endif
 }
 
 TEST_F(InstalledPackage, AProgramBuiltWithFindPackageFusesAsLvfFuseDoes)
