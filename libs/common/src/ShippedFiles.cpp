@@ -12,7 +12,7 @@ std::string shippedFile(const std::string& installed, const std::string& inSourc
 	// Linux names the running program's file here; no such link, no install.
 	const fs::path program = fs::read_symlink("/proc/self/exe", ec);
 	if (ec) return inSourceTree;
-	const fs::path candidate = program.parent_path().parent_path() / "share" / "lvfusion" / installed;
+	const fs::path candidate = (program.parent_path() / LVF_SHARE_FROM_BIN / installed).lexically_normal();
 	return fs::is_regular_file(candidate, ec) ? candidate.string() : inSourceTree;
 }
 }  // namespace lvf::common

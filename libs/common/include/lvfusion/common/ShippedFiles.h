@@ -9,6 +9,7 @@
 namespace lvf::common
 {
 /** `<prefix>/share/lvfusion/<installed>` when the running program lies in
- * `<prefix>/bin` and that file exists there; otherwise `inSourceTree`. */
+ * `<prefix>/bin` and that file exists there (the install's own bin/ and
+ * share/ directories, GNUInstallDirs'); otherwise `inSourceTree`. */
 std::string shippedFile(const std::string& installed, const std::string& inSourceTree);
 }  // namespace lvf::common
