@@ -92,9 +92,6 @@ BENCHMARK(BM_Fusion_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_SGBM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_BM_BoxRoom)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
-const std::string kFusionName = "fusion (this paper)";
-const std::string kSgbmName = "StereoSGBM 3-way";
-const std::string kBmName = "StereoBM";
 
 }  // namespace
 

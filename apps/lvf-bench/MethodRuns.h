@@ -14,6 +14,11 @@
 
 namespace lvf::bench
 {
+/** The methods' names in every table lvf-bench prints. */
+inline const std::string kFusionName = "fusion (this paper)";
+inline const std::string kSgbmName = "StereoSGBM 3-way";
+inline const std::string kBmName = "StereoBM";
+
 /** The fused scan of `laser` with the dense matcher's points over disparities
  * from depth `zMin` out; with `times`, the time of its two stages
  * (matching, disparity -> fused scan) recorded as `name`. */

@@ -19,10 +19,7 @@ namespace lvf::bench
 {
 namespace
 {
-const std::string kFusion = "fusion (this paper)";
 const std::string kFusionSceneRange = "fusion, the scene's range";
-const std::string kSgbm = "StereoSGBM 3-way";
-const std::string kBm = "StereoBM";
 
 std::vector<std::string> sceneFolders(const std::string& root)
 {
@@ -62,23 +59,23 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 	for (int pass = 0; pass < passes; pass++)
 	{
 		const auto r = fusion.process(scan, stereo, imported.scene.name);
-		recordFusionTimes(times, kFusion, r.times);
-		fused[kFusion] = r.fused;
+		recordFusionTimes(times, kFusionName, r.times);
+		fused[kFusionName] = r.fused;
 		const auto q = fusionOverSceneRange.process(scan, stereo, imported.scene.name);
 		recordFusionTimes(times, kFusionSceneRange, q.times);
 		fused[kFusionSceneRange] = q.fused;
-		fused[kSgbm] = denseFusedScan(
-			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::SemiGlobal, &times, kSgbm);
-		fused[kBm] = denseFusedScan(
-			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::Block, &times, kBm);
+		fused[kSgbmName] = denseFusedScan(
+			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::SemiGlobal, &times, kSgbmName);
+		fused[kBmName] = denseFusedScan(
+			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::Block, &times, kBmName);
 	}
 	const auto inView = lvf::metrics::bearingsInView(scan, imported.truth, stereo, options.band, options.depth.zMax);
 	std::cout << "  " << imported.scene.name << " (" << left.cols << "x" << left.rows << "; the dense matchers "
 			  << (calib.ndisp > 0 ? "over its disparities 0-" + std::to_string(calib.ndisp) : std::string("from z_min"))
 			  << ", from " << std::fixed << std::setprecision(2) << denseZMin
 			  << " m), median time per frame and stage [ms]:\n";
-	times.print(std::cout, kSgbm, "    ");
-	for (const auto& name : {kFusion, kFusionSceneRange, kSgbm, kBm})
+	times.print(std::cout, kSgbmName, "    ");
+	for (const auto& name : {kFusionName, kFusionSceneRange, kSgbmName, kBmName})
 	{
 		const auto s = lvf::metrics::scoreFusedScan(scan, *fused[name], imported.truth, inView, options.depth.zMax);
 		std::cout << "    " << std::setw(27) << std::left << name << std::right << std::fixed << std::setprecision(3)

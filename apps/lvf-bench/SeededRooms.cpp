@@ -14,7 +14,6 @@ namespace lvf::bench
 void printSeededRooms(uint32_t first, uint32_t last, int passes)
 {
 	using lvf::depth::DenseMatcher;
-	const std::string kFusion = "fusion (this paper)", kSgbm = "StereoSGBM 3-way", kBm = "StereoBM";
 	const lvf::fusion::CLaserStereoFusion::TOptions options;  // lvf-fuse's defaults
 	std::vector<SimulatedFrames> rooms;
 	size_t frameCount = 0;
@@ -36,13 +35,13 @@ void printSeededRooms(uint32_t first, uint32_t last, int passes)
 			{
 				const auto& frame = room.frames[k];
 				const auto result = fusion.process(*frame.scan, *frame.stereo, "frame", frame.odometry);
-				recordFusionTimes(times, kFusion, result.times);
-				const auto sgbm = room.dense(k, DenseMatcher::SemiGlobal, options, &times, kSgbm);
-				const auto bm = room.dense(k, DenseMatcher::Block, options, &times, kBm);
+				recordFusionTimes(times, kFusionName, result.times);
+				const auto sgbm = room.dense(k, DenseMatcher::SemiGlobal, options, &times, kSgbmName);
+				const auto bm = room.dense(k, DenseMatcher::Block, options, &times, kBmName);
 				if (pass > 0) continue;
-				scores[kFusion].add(room.score(k, *result.fused, options));
-				scores[kSgbm].add(room.score(k, *sgbm, options));
-				scores[kBm].add(room.score(k, *bm, options));
+				scores[kFusionName].add(room.score(k, *result.fused, options));
+				scores[kSgbmName].add(room.score(k, *sgbm, options));
+				scores[kBmName].add(room.score(k, *bm, options));
 				scores["laser alone"].add(room.score(k, *frame.scan, options));
 			}
 		}
@@ -50,7 +49,7 @@ void printSeededRooms(uint32_t first, uint32_t last, int passes)
 			  << frameCount << " frames, " << rooms.front().left.front().cols << "x"
 			  << rooms.front().left.front().rows << ", " << passes
 			  << " passes, one thread), median time per frame and stage [ms]:\n";
-	times.print(std::cout, kSgbm);
+	times.print(std::cout, kSgbmName);
 	std::cout << "  against the simulator's truth scans:\n";
 	for (const auto& [name, s] : scores) printScoreLine(std::cout, name, s);
 }
