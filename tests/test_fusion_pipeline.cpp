@@ -55,12 +55,12 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 		const auto s = fuseWorld(seed, times, frames);
 		std::cout << "world " << seed << ": hidden " << s.hidden << ", recall " << s.recall()
 				  << ", phantom rate " << s.phantomRate() << " of " << s.inView
-				  << ", hidden range error " << s.hiddenRangeErrorMedian << " m\n";
+				  << ", hidden range error " << s.hiddenRangeErrorMedian() << " m\n";
 		total.add(s);
 	}
 	std::cout << "all " << frames << " frames: hidden " << total.hidden << ", recall " << total.recall()
 			  << ", phantom rate " << total.phantomRate() << " of " << total.inView
-			  << ", hidden range error " << total.hiddenRangeErrorMedian << " m; search "
+			  << ", hidden range error " << total.hiddenRangeErrorMedian() << " m; search "
 			  << times.search / frames << " ms, evaluation " << times.evaluate / frames << " ms per frame\n";
 	RecordProperty("recall", std::to_string(total.recall()));
 	RecordProperty("phantom_rate", std::to_string(total.phantomRate()));
@@ -93,7 +93,7 @@ TEST(FusionPipeline, SeededWorldsRecallWhatTheLaserMisses)
 	// test_nearest_first_search): 0.905 (257 of 284), 0.017 (10 of 577).
 	EXPECT_GE(total.recall(), 0.90);
 	EXPECT_LE(total.phantomRate(), 0.02);
-	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
+	EXPECT_LE(total.hiddenRangeErrorMedian(), 0.05);
 }
 
 TEST(FusionPipeline, ObstaclesTheLaserSeesGiveNoVisualObstacles)

@@ -52,7 +52,7 @@ Fused fuse(bool grow, const std::string& room = tableRoom(), bool sideways = tru
 	std::cout << (grow ? "with" : "without") << " growth" << (grow && !sideways ? ", not sideways" : "") << ": " << out.result.grownPoints << " grown of "
 			  << out.result.search.points.size() << " points; hidden " << out.score.hidden << ", recall "
 			  << out.score.recall() << ", phantom rate " << out.score.phantomRate() << ", hidden range error "
-			  << out.score.hiddenRangeErrorMedian << " m\n";
+			  << out.score.hiddenRangeErrorMedian() << " m\n";
 	return out;
 }
 
@@ -94,8 +94,8 @@ TEST(HorizontalSurfaceGrowth, BringsTheFusedRangesToTheTopsEdge)
 	// way (with the plane at the start point's own height: 0.780, 0.033 m).
 	EXPECT_GT(with.score.recall(), without.score.recall() + 0.2);
 	EXPECT_LE(with.score.phantoms, without.score.phantoms);
-	EXPECT_LT(with.score.hiddenRangeErrorMedian, 0.035);
-	EXPECT_LT(with.score.hiddenRangeErrorMedian, without.score.hiddenRangeErrorMedian);
+	EXPECT_LT(with.score.hiddenRangeErrorMedian(), 0.035);
+	EXPECT_LT(with.score.hiddenRangeErrorMedian(), without.score.hiddenRangeErrorMedian());
 }
 
 TEST(HorizontalSurfaceGrowth, FollowsAFarTopSidewaysAlongItsRows)
@@ -114,7 +114,7 @@ TEST(HorizontalSurfaceGrowth, FollowsAFarTopSidewaysAlongItsRows)
 	ASSERT_GT(both.score.hidden, 15u);
 	EXPECT_GE(both.result.grownPoints, down.result.grownPoints + 5);
 	EXPECT_GE(both.score.recall(), down.score.recall() + 0.08);
-	EXPECT_LT(both.score.hiddenRangeErrorMedian, down.score.hiddenRangeErrorMedian - 0.2);
+	EXPECT_LT(both.score.hiddenRangeErrorMedian(), down.score.hiddenRangeErrorMedian() - 0.2);
 	EXPECT_LE(both.score.phantoms, down.score.phantoms);
 	// Every grown point within the table's extent (the walk down also
 	// follows a leg's foot), and the ones the sideways walk added on the top.

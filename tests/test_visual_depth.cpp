@@ -52,7 +52,7 @@ void report(const char* what, const Outcome& o)
 {
 	std::cout << what << ": hidden " << o.score.hidden << ", recall " << o.score.recall()
 			  << ", phantom rate " << o.score.phantomRate() << " of " << o.score.inView
-			  << ", hidden range error " << o.score.hiddenRangeErrorMedian << " m; searched "
+			  << ", hidden range error " << o.score.hiddenRangeErrorMedian() << " m; searched "
 			  << o.stats.searchedPixels << " px, " << o.stats.disparitiesTested
 			  << " NCC, accepted " << o.stats.accepted << " (weak " << o.stats.rejectedWeak
 			  << ", not peak " << o.stats.rejectedNotPeak << ", ambiguous "
@@ -193,11 +193,11 @@ TEST_P(VisualDepthModes, FindsFloatingBoxesTheLaserMisses)
 	}
 	std::cout << "all: hidden " << total.hidden << ", recall " << total.recall() << ", phantom rate "
 			  << total.phantomRate() << " of " << total.inView << ", hidden range error "
-			  << total.hiddenRangeErrorMedian << " m\n";
+			  << total.hiddenRangeErrorMedian() << " m\n";
 	EXPECT_GT(total.hidden, 80u);
 	EXPECT_GE(total.recall(), 0.9);
 	EXPECT_LE(total.phantomRate(), 0.02);
-	EXPECT_LE(total.hiddenRangeErrorMedian, 0.05);
+	EXPECT_LE(total.hiddenRangeErrorMedian(), 0.05);
 }
 INSTANTIATE_TEST_SUITE_P(Search, VisualDepthModes, ::testing::Values(true, false),
 	[](const auto& info) { return info.param ? "CoarseToFine" : "FullResolution"; });
@@ -258,7 +258,7 @@ TEST(VisualDepth, FloorDisparityMarginFindsLowObstaclesStandingOnTheFloor)
 	report("low boxes, floor_disparity_margin 2", narrowed);
 	EXPECT_GE(narrowed.score.recall(), 0.6);
 	EXPECT_LE(narrowed.score.phantomRate(), 0.02);
-	EXPECT_LE(narrowed.score.hiddenRangeErrorMedian, 0.08);
+	EXPECT_LE(narrowed.score.hiddenRangeErrorMedian(), 0.08);
 }
 
 namespace

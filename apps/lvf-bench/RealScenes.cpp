@@ -80,8 +80,8 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 		const auto s = lvf::metrics::scoreFusedScan(scan, *fused[name], imported.truth, inView, options.depth.zMax);
 		std::cout << "    " << std::setw(27) << std::left << name << std::right << std::fixed << std::setprecision(3)
 				  << " recall " << s.recall() << " of " << s.hidden << "  phantom rate " << s.phantomRate() << " of "
-				  << s.inView << "  median range error " << s.rangeErrorMedian << " m (hidden "
-				  << s.hiddenRangeErrorMedian << " m)\n";
+				  << s.inView << "  median range error " << s.rangeErrorMedian() << " m (hidden "
+				  << s.hiddenRangeErrorMedian() << " m)\n";
 	}
 }
 }  // namespace

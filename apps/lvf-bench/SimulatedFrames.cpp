@@ -52,7 +52,7 @@ void printScoreLine(std::ostream& out, const std::string& method, const lvf::met
 	out << std::fixed << std::setprecision(3) << indent << std::setw(22) << std::left << method << std::right
 		<< " recall " << s.recall() << " of " << s.hidden << " (seen by both cameras " << s.seenRecall()
 		<< ")  phantom rate " << s.phantomRate() << " of " << s.inView << "  median range error "
-		<< s.rangeErrorMedian << " m (hidden " << s.hiddenRangeErrorMedian << " m)\n";
+		<< s.rangeErrorMedian() << " m (hidden " << s.hiddenRangeErrorMedian() << " m)\n";
 }
 
 }  // namespace lvf::bench

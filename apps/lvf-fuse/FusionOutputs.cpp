@@ -150,7 +150,7 @@ bool FusionOutputs::add(
 	{
 		const auto& s = truth->score;
 		m_csv << mrpt::format(
-			",%zu,%zu,%.4f,%.4f,%.4f", s.inView, s.hidden, s.recall(), s.phantomRate(), s.hiddenRangeErrorMedian);
+			",%zu,%zu,%.4f,%.4f,%.4f", s.inView, s.hidden, s.recall(), s.phantomRate(), s.hiddenRangeErrorMedian());
 		m_csv << (truth->seenRanges.empty() ? std::string(",,\n") : mrpt::format(",%zu,%.4f\n", s.seenHidden, s.seenRecall()));
 	}
 	else

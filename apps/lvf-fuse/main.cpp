@@ -205,7 +205,7 @@ void printSummary(
 			"  against %s (%zu frame%s): recall %.3f of %zu hidden bearings, phantom rate %.4f "
 			"of %zu in view, median range error %.3f m (hidden %.3f m)\n",
 			truth.path.c_str(), t.scored, t.scored == 1 ? "" : "s", s.recall(), s.hidden, s.phantomRate(), s.inView,
-			s.rangeErrorMedian, s.hiddenRangeErrorMedian);
+			s.rangeErrorMedian(), s.hiddenRangeErrorMedian());
 	if (t.scored && !truth.seenScans.empty())
 		std::cout << mrpt::format(
 			"  recall %.3f of the %zu of them whose obstacle both cameras see (%s)\n", s.seenRecall(), s.seenHidden,

@@ -1,5 +1,4 @@
 #include <lvfusion/common/LaserRange.h>
-#include <lvfusion/common/Medians.h>
 #include <lvfusion/common/OpenCvCamera.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 
@@ -73,8 +72,6 @@ void FusionScore::add(const FusionScore& o)
 	seenRecalled += o.seenRecalled;
 	errors.insert(errors.end(), o.errors.begin(), o.errors.end());
 	hiddenErrors.insert(hiddenErrors.end(), o.hiddenErrors.begin(), o.hiddenErrors.end());
-	rangeErrorMedian = lvf::common::upperMedian(errors, 0.f);
-	hiddenRangeErrorMedian = lvf::common::upperMedian(hiddenErrors, 0.f);
 }
 
 FusionScore scoreFusedScan(
@@ -111,8 +108,6 @@ FusionScore scoreFusedScan(
 			s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
 		}
 	}
-	s.rangeErrorMedian = lvf::common::upperMedian(s.errors, 0.f);
-	s.hiddenRangeErrorMedian = lvf::common::upperMedian(s.hiddenErrors, 0.f);
 	return s;
 }
 }  // namespace lvf::metrics

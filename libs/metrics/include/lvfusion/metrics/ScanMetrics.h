@@ -3,6 +3,7 @@
 // computed per frame from a laser scan, a truth scan and the camera geometry.
 
 #include <lvfusion/common/HeightBand.h>
+#include <lvfusion/common/Medians.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationStereoImages.h>
 
@@ -48,12 +49,16 @@ struct FusionScore
 	/** With a seen truth scan (StereoSeenTruth.h): the hidden bearings whose
 	 * obstacle both cameras see, and of those the recalled. */
 	size_t seenHidden = 0, seenRecalled = 0;
-	double rangeErrorMedian = 0;  //!< median |fused - truth| where truth exists [m]
-	double hiddenRangeErrorMedian = 0;	//!< same, over hidden bearings only [m]
 	double recall() const { return hidden ? double(recalled) / double(hidden) : 1.0; }
 	double phantomRate() const { return inView ? double(phantoms) / double(inView) : 0.0; }
 	double seenRecall() const { return seenHidden ? double(seenRecalled) / double(seenHidden) : 1.0; }
-	/** Adds another frame's counts (medians are recomputed from all errors). */
+	/** Median |fused - truth| where truth exists [m] (0: none). Computed
+	 * when asked, from every error added: a run's add() per frame stays
+	 * cheap however long the run. */
+	double rangeErrorMedian() const { return lvf::common::upperMedian(errors, 0.f); }
+	/** The same over the hidden bearings only [m]. */
+	double hiddenRangeErrorMedian() const { return lvf::common::upperMedian(hiddenErrors, 0.f); }
+	/** Adds another frame's counts and errors. */
 	void add(const FusionScore& other);
 	std::vector<float> errors, hiddenErrors;
 };
