@@ -123,17 +123,9 @@ bool FusionOutputs::add(
 	const lvf::fusion::CLaserStereoFusion::Result& r, const mrpt::poses::CPose2D& odometry,
 	const std::optional<FrameTruth>& truth)
 {
-	const mrpt::poses::CPose3D pose(odometry);
-	if (m_inserted == 0)
-		for (auto* grid : {&m_laserGrid, &m_fusedGrid}) lvf::common::startGridAround(*grid, odometry.x(), odometry.y());
-	const bool insertable = lvf::common::insertableInGrid(m_laserGrid, pose, laser) &&
-		lvf::common::insertableInGrid(m_fusedGrid, pose, *r.fused);
-	if (insertable)
-	{
-		m_laserGrid.insertObservation(laser, pose);
-		m_fusedGrid.insertObservation(*r.fused, pose);
-		m_inserted++;
-	}
+	const bool inserted = lvf::common::insertScansAt(
+		odometry, m_inserted == 0, {{&m_laserGrid, &laser}, {&m_fusedGrid, r.fused.get()}});
+	m_inserted += inserted;
 
 	const size_t shortened = r.shortenedBearings(laser);
 	const auto bridged = static_cast<size_t>(std::count(r.bridged.begin(), r.bridged.end(), true));
@@ -157,7 +149,7 @@ bool FusionOutputs::add(
 		m_csv << ",,,,,,,\n";
 	addBearings(frame, laser, r, truth);
 	if (m_pointsCsv.is_open()) addPoints(frame, laser, r);
-	return insertable;
+	return inserted;
 }
 
 void FusionOutputs::close()

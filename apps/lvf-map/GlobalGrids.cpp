@@ -20,18 +20,12 @@ bool GlobalGrids::add(
 	const mrpt::obs::CObservation2DRangeScan& laser, const mrpt::obs::CObservation2DRangeScan* fused,
 	const mrpt::poses::CPose2D& pose)
 {
-	const mrpt::poses::CPose3D robot(pose);
-	if (m_laserScans == 0)
-		for (auto* g : {&m_laser, &m_fused}) lvf::common::startGridAround(*g, pose.x(), pose.y());
-	if (!lvf::common::insertableInGrid(m_laser, robot, laser) || (fused && !lvf::common::insertableInGrid(m_fused, robot, *fused)))
-		return false;
+	if (!lvf::common::insertScansAt(pose, m_laserScans == 0, {{&m_laser, &laser}, {&m_fused, fused}})) return false;
 	m_laserScans++;
-	m_laser.insertObservation(laser, robot);
 	if (fused)
 	{
-		m_fused.insertObservation(*fused, robot);
 		m_fusedScans++;
-		const mrpt::poses::CPose3D sensor = robot + fused->sensorPose;
+		const mrpt::poses::CPose3D sensor = mrpt::poses::CPose3D(pose) + fused->sensorPose;
 		for (size_t i = 0; i < fused->getScanSize() && i < laser.getScanSize(); i++)
 		{
 			const float r = fused->getScanRange(i);

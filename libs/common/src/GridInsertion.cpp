@@ -26,4 +26,16 @@ bool insertableInGrid(
 	return outsideX <= reach && outsideY <= reach;
 }
 
+bool insertScansAt(const mrpt::poses::CPose2D& pose, bool first, std::initializer_list<GridAndScan> gridsAndScans)
+{
+	if (first)
+		for (const auto& [grid, scan] : gridsAndScans) startGridAround(*grid, pose.x(), pose.y());
+	const mrpt::poses::CPose3D robot(pose);
+	for (const auto& [grid, scan] : gridsAndScans)
+		if (scan && !insertableInGrid(*grid, robot, *scan)) return false;
+	for (const auto& [grid, scan] : gridsAndScans)
+		if (scan) grid->insertObservation(*scan, robot);
+	return true;
+}
+
 }  // namespace lvf::common

@@ -7,7 +7,11 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
+
+#include <initializer_list>
+#include <utility>
 
 namespace lvf::common
 {
@@ -27,5 +31,14 @@ constexpr double kMaxGridGrowth = 1000.0;
 bool insertableInGrid(
 	const mrpt::maps::COccupancyGridMap2D& grid, const mrpt::poses::CPose3D& robot,
 	const mrpt::obs::CObservation2DRangeScan& scan);
+
+/** A grid and the scan it takes at one pose (null: none this time). */
+using GridAndScan = std::pair<mrpt::maps::COccupancyGridMap2D*, const mrpt::obs::CObservation2DRangeScan*>;
+
+/** One robot pose's scans into their grids, all or none: with `first` (no
+ * scan inserted yet) every grid is started round the pose, then each scan
+ * goes into its grid if every scan can (insertableInGrid). False, and
+ * nothing inserted, otherwise. */
+bool insertScansAt(const mrpt::poses::CPose2D& pose, bool first, std::initializer_list<GridAndScan> gridsAndScans);
 
 }  // namespace lvf::common
