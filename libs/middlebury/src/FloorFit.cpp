@@ -91,7 +91,7 @@ FloorPlane fitFloor(const MiddleburyScene& scene, const FloorFitOptions& o)
 	double sumSq = 0;
 	for (double r : residuals) sumSq += r * r;
 	best.rms = residuals.empty() ? 0 : std::sqrt(sumSq / static_cast<double>(residuals.size()));
-	if (!residuals.empty()) best.medianResidual = lvf::common::upperMedian(residuals, 0.0);
+	best.medianResidual = lvf::common::upperMedian(residuals, 0.0);
 
 	const double fraction = pts.empty() ? 0 : double(best.inliers) / double(pts.size());
 	const std::string source = scene.file("disp0GT.pfm");
