@@ -1,6 +1,6 @@
 #include <lvfusion/depth/CrossTerms.h>
 #include <lvfusion/depth/EpipolarScores.h>
-#include "VectorClones.h"
+#include <lvfusion/common/VectorClones.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include "SubpixelRefinement.h"
-#include "VectorClones.h"
+#include <lvfusion/common/VectorClones.h>
 
 #include <algorithm>
 #include <array>

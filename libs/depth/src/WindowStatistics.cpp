@@ -1,7 +1,9 @@
 #include <lvfusion/common/RowBands.h>
 #include <lvfusion/common/SlidingWindowRows.h>
+#include <lvfusion/common/VectorClones.h>
 #include <lvfusion/depth/WindowStatistics.h>
 
+#include <opencv2/core/hal/hal.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -27,6 +29,48 @@ void wholeImage(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& de
 	cv::max(variance, 0.0, variance);
 	cv::sqrt(variance, deviation);
 }
+
+/** Adds (sign +1) or subtracts (-1) an image row to the column sums of
+ * values and of squares. */
+LVF_VECTOR_CLONES void slideColumnSums(
+	const float* __restrict row, float sign, int width, float* __restrict sums, float* __restrict squares)
+{
+	for (int u = 0; u < width; u++)
+	{
+		sums[u] += sign * row[u];
+		squares[u] += sign * (row[u] * row[u]);
+	}
+}
+
+/** Window sums at columns half .. width - 1 - half from the column sums, a
+ * column of the window at a time (whole passes the compiler vectorises). */
+LVF_VECTOR_CLONES void windowSumsOfRow(const float* __restrict columnSums, const float* __restrict columnSquares,
+	int half, int width, float* __restrict sums, float* __restrict squares)
+{
+	const int first = half, last = width - 1 - half;
+	std::fill(sums + first, sums + last + 1, 0.f);
+	std::fill(squares + first, squares + last + 1, 0.f);
+	for (int k = -half; k <= half; k++)
+		for (int u = first; u <= last; u++)
+		{
+			sums[u] += columnSums[u + k];
+			squares[u] += columnSquares[u + k];
+		}
+}
+
+/** A row's means and variances (clamped at 0: rounding can leave a flat
+ * window's just below) from its window sums, scaled as OpenCV's box
+ * filters scale: by the reciprocal of the area in double, rounded to float. */
+LVF_VECTOR_CLONES void meansAndVariances(const float* __restrict sums, const float* __restrict squares, int first,
+	int last, double scale, float* __restrict mean, float* __restrict variance)
+{
+	for (int u = first; u <= last; u++)
+	{
+		const float windowMean = static_cast<float>(double(sums[u]) * scale);
+		mean[u] = windowMean;
+		variance[u] = std::max(static_cast<float>(double(squares[u]) * scale) - windowMean * windowMean, 0.f);
+	}
+}
 }  // namespace
 
 void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f& mean, cv::Mat1f& deviation)
@@ -39,8 +83,6 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 	if (rows.all() || side > kExactSide) return wholeImage(image, half, mean, deviation);
 	mean.create(image.size());
 	deviation.create(image.size());
-	// OpenCV's box filters scale the sum by the reciprocal of the area in
-	// double and round to float; so do these.
 	const double scale = 1.0 / (side * side);
 	const size_t n = static_cast<size_t>(width);
 	// The grid's first row where a window fits.
@@ -48,18 +90,12 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 	// Bands of rows on OpenCV's threads, each sliding sums of its own.
 	lvf::common::RowBands(start, image.rows - half, rows.step, 4).forEach([&](int, int firstRow, int endRow) {
 		std::vector<float> columnSum(n, 0.f), columnSquares(n, 0.f), windowSum(n), windowSquares(n);
-		auto addRow = [&](int y, int direction) {
-			const float sign = static_cast<float>(direction);
-			const float* row = image.ptr<float>(y);
-			for (int u = 0; u < width; u++)
-			{
-				columnSum[size_t(u)] += sign * row[u];
-				columnSquares[size_t(u)] += sign * (row[u] * row[u]);
-			}
-		};
 		auto clear = [&] {
 			std::fill(columnSum.begin(), columnSum.end(), 0.f);
 			std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
+		};
+		auto addRow = [&](int y, int direction) {
+			slideColumnSums(image.ptr<float>(y), static_cast<float>(direction), width, columnSum.data(), columnSquares.data());
 		};
 		int previous = -1;
 		for (int v = firstRow; v < endRow; v += rows.step)
@@ -69,26 +105,13 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 			// integers: the order of the additions does not matter).
 			lvf::common::slideWindowRows(previous, v, half, clear, addRow);
 			previous = v;
-			// Window sums where a window fits, a column of the window at a
-			// time (loops the compiler vectorises).
-			const int first = half, last = width - 1 - half;
-			std::fill(windowSum.begin(), windowSum.end(), 0.f);
-			std::fill(windowSquares.begin(), windowSquares.end(), 0.f);
-			for (int k = -half; k <= half; k++)
-				for (int u = first; u <= last; u++)
-				{
-					windowSum[size_t(u)] += columnSum[size_t(u + k)];
-					windowSquares[size_t(u)] += columnSquares[size_t(u + k)];
-				}
-			float* m = mean.ptr<float>(v);
-			float* d = deviation.ptr<float>(v);
-			for (int u = first; u <= last; u++)
-			{
-				const float windowMean = static_cast<float>(double(windowSum[size_t(u)]) * scale);
-				const float variance = static_cast<float>(double(windowSquares[size_t(u)]) * scale) - windowMean * windowMean;
-				m[u] = windowMean;
-				d[u] = std::sqrt(std::max(variance, 0.f));
-			}
+			windowSumsOfRow(columnSum.data(), columnSquares.data(), half, width, windowSum.data(), windowSquares.data());
+			meansAndVariances(windowSum.data(), windowSquares.data(), half, width - 1 - half, scale, mean.ptr<float>(v), deviation.ptr<float>(v));
+			// The deviations by OpenCV's vectorised square root (std::sqrt's
+			// errno check keeps GCC from vectorising; IEEE's root is exact
+			// either way).
+			float* variance = deviation.ptr<float>(v) + half;
+			cv::hal::sqrt32f(variance, variance, width - 2 * half);
 		}
 	});
 }

@@ -1,4 +1,5 @@
 #include <lvfusion/common/RowBands.h>
+#include <lvfusion/common/VectorClones.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 
 #include <Eigen/Dense>
@@ -13,7 +14,6 @@ namespace
 struct PixelAffine
 {
 	double a = 0, b = 0, c = 0;
-	double at(double u, double v) const { return a * u + b * v + c; }
 };
 
 /** `k * (n . ray(u, v))` for a camera-frame vector n, as a PixelAffine. */
@@ -45,6 +45,19 @@ struct Wall
 {
 	PixelAffine disparity, edgeA, edgeB;
 };
+
+/** row[u] = max(0, the floor's disparity a u + bv + c) over a whole row. */
+LVF_VECTOR_CLONES void renderFloorRow(double a, double bv, double c, int width, float* __restrict row)
+{
+	for (int u = 0; u < width; u++) row[u] = static_cast<float>(std::max(0.0, a * u + bv + c));
+}
+
+/** row[u] = max(row[u], a wall's disparity) over columns u0 .. u1: the
+ * nearest surface wins. */
+LVF_VECTOR_CLONES void renderWallRow(double a, double rowC, int u0, int u1, float* __restrict row)
+{
+	for (int u = u0; u <= u1; u++) row[u] = std::max(row[u], static_cast<float>(a * u + rowC));
+}
 
 }  // namespace
 
@@ -95,9 +108,7 @@ cv::Mat1f renderModelDisparity(
 	// Rows are independent: on OpenCV's threads (RowBands.h).
 	lvf::common::forEachRow(g.size.height, [&](int v) {
 		float* row = disparity.ptr<float>(v);
-		if (floorOk)
-			for (int u = 0; u < g.size.width; u++)
-				row[u] = static_cast<float>(std::max(0.0, floor.at(u, v)));
+		if (floorOk) renderFloorRow(floor.a, floor.b * v, floor.c, g.size.width, row);
 		for (const Wall& w : walls)
 		{
 			double lo = 0, hi = lastCol;
@@ -106,9 +117,7 @@ cv::Mat1f renderModelDisparity(
 			clipToNonNegative(w.disparity, v, lo, hi);	// in front of the camera
 			if (lo > hi) continue;
 			const int u0 = static_cast<int>(std::ceil(lo)), u1 = static_cast<int>(std::floor(hi));
-			const double rowC = w.disparity.b * v + w.disparity.c;
-			for (int u = u0; u <= u1; u++)
-				row[u] = std::max(row[u], static_cast<float>(w.disparity.a * u + rowC));
+			renderWallRow(w.disparity.a, w.disparity.b * v + w.disparity.c, u0, u1, row);
 		}
 	});
 	return disparity;

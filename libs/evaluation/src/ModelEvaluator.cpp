@@ -1,6 +1,7 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RowBands.h>
+#include <lvfusion/evaluation/GridRowNcc.h>
 #include <lvfusion/evaluation/GridWindowSums.h>
 #include <lvfusion/evaluation/ImageNoise.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
@@ -138,28 +139,23 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	bands.forEach([&](int b, int firstRow, int endRow) {
 		// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
 		GridWindowSums sums(left, warped, unverifiable, half);
+		GridRowNcc row(area, minVar);
+		const int columns = std::max(0, (size.width - half - first + stride - 1) / stride);
 		auto& counts = bandCounts[static_cast<size_t>(b)];
 		for (int v = firstRow; v < endRow; v += stride)
 		{
 			sums.moveTo(v);
-			for (int u = first; u < size.width - half; u += stride)
+			row.compute(sums, first, stride, columns);
+			for (int i = 0, u = first; i < columns; i++, u += stride)
 			{
-				// The same rules, in the same order, as evaluate(). W's sums
-				// come in 1/32 grey levels: scaling by powers of two is exact.
-				const GridWindowSums::Sums w = sums.at(u);
-				const double meanL = double(w.l) / area;
-				const double meanW = double(w.w32) / 32.0 / area;
-				const double varL = std::max(double(w.ll) / area - meanL * meanL, 0.0);
-				const double varW = std::max(double(w.ww1024) / 1024.0 / area - meanW * meanW, 0.0);
-				const double ncc = varW < minVar
-					? 0.0
-					: (double(w.lw32) / 32.0 / area - meanL * meanW) / std::sqrt(varL * varW + 1e-6);
-				out.leftMean(v, u) = static_cast<float>(meanL);
-				out.leftStd(v, u) = static_cast<float>(std::sqrt(varL));
+				// The same rules, in the same order, as evaluate().
+				const double ncc = row.ncc(i), varL = row.leftVariance(i);
+				out.leftMean(v, u) = static_cast<float>(row.leftMean(i));
+				out.leftStd(v, u) = static_cast<float>(row.leftStd(i));
 				out.ncc(v, u) = static_cast<float>(ncc);
 				PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
 				if (varL < minVar) s = PixelState::Untextured;
-				if (w.unverifiable > 0) s = PixelState::Unverifiable;
+				if (row.unverifiable(i) > 0) s = PixelState::Unverifiable;
 				if (modelDisparity(v, u) <= 0 && varL >= minVar) s = PixelState::Unmodelled;
 				out.state(v, u) = static_cast<uint8_t>(s);
 				counts[static_cast<size_t>(s)]++;
