@@ -190,9 +190,12 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry, rectification);
 	});
 
-	// Every judged pixel: the whole image, or the search grid.
-	const CalibrationEvidence evidence = calibrationEvidence(
-		r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, gridFirst, gridStride);
+	// Every judged pixel: the whole image, or the search grid (timed with
+	// the model check it reads).
+	const CalibrationEvidence evidence = timed(r.times.evaluate, [&] {
+		return calibrationEvidence(
+			r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, gridFirst, gridStride);
+	});
 	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
 	const bool floorJudgeable = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels;
 	const bool floorContradicted = floorJudgeable && floorAgreement < m_options.minFloorAgreement;
