@@ -46,10 +46,12 @@ struct Wall
 	PixelAffine disparity, edgeA, edgeB;
 };
 
-/** row[u] = max(0, the floor's disparity a u + bv + c) over a whole row. */
+/** row[u] = max(0, the floor's disparity a u + bv + c) over a whole row
+ * (rounded to float before the max, which is the same value and lets GCC
+ * vectorise the loop). */
 LVF_VECTOR_CLONES void renderFloorRow(double a, double bv, double c, int width, float* __restrict row)
 {
-	for (int u = 0; u < width; u++) row[u] = static_cast<float>(std::max(0.0, a * u + bv + c));
+	for (int u = 0; u < width; u++) row[u] = std::max(0.f, static_cast<float>(a * u + bv + c));
 }
 
 /** row[u] = max(row[u], a wall's disparity) over columns u0 .. u1: the
