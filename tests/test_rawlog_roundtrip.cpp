@@ -1,10 +1,12 @@
 // Rawlogs written by the simulator read back through MRPT unchanged, in both
-// layouts; a seed fixes every bit of the output.
+// layouts; a seed fixes every bit of the output; a file that cannot be
+// written is reported.
 
 #include "TestWorlds.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -160,4 +162,25 @@ TEST(Determinism, SameSeedSameBitsOtherSeedOtherNoise)
 	// Ground truth does not depend on the noise seed.
 	EXPECT_EQ(a[1].truthScan, c[1].truthScan);
 	EXPECT_EQ(a[1].truePose, c[1].truePose);
+}
+
+// The file is compressed and written on a thread of its own: a write that
+// fails there (here /dev/full, a disk with no room) is reported to the
+// caller, naming the file, not lost with the thread.
+TEST(RawlogWriterErrors, AFullDiskIsReportedByCloseNamingTheFile)
+{
+	if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+	const auto frames = simulate(5, 2);
+	lvf::common::RawlogWriter writer("/dev/full", RawlogFormat::Observations);
+	try
+	{
+		// Images are far larger than gzip's buffer: they reach the device.
+		for (const auto& f : frames) writer.append({f.timestamp, f.odometry, {f.scan, f.stereo}});
+		writer.close();
+		FAIL() << "writing to /dev/full succeeded";
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("/dev/full"), std::string::npos) << e.what();
+	}
 }

@@ -1,10 +1,12 @@
+#include "GzipWriterThread.h"
+
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/archiveFrom_std_vector.h>
 
 namespace lvf::common
 {
@@ -19,21 +21,27 @@ RawlogFormat parseRawlogFormat(const std::string& name, const std::string& sourc
 RawlogWriter::RawlogWriter(
 	const std::string& path, RawlogFormat format,
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel)
-	: m_out(std::make_unique<mrpt::io::CFileGZOutputStream>()),
-	  m_format(format),
-	  m_motionModel(motionModel)
+	// Level 1: most of a log is camera images, which compress little at
+	// any level (to about 3/4 at level 1), so a higher one costs time for
+	// next to nothing.
+	: m_gzip(std::make_unique<GzipWriterThread>(path, 1)), m_format(format), m_motionModel(motionModel)
 {
-	// Level 1: images are already zip-compressed by CImage's serialization,
-	// so a higher gzip level costs time and saves next to nothing.
-	if (!m_out->open(path, 1))
-		throw InputError(path, "", "cannot open for writing");
 }
 
 RawlogWriter::~RawlogWriter() = default;
 
+void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
+{
+	// The same bytes the archive would write to the file, handed to the
+	// compressing thread.
+	std::vector<uint8_t> bytes;
+	auto arch = mrpt::serialization::archiveFrom(bytes);
+	arch << object;
+	m_gzip->write(std::move(bytes));
+}
+
 void RawlogWriter::append(const RawlogFrame& frame)
 {
-	auto arch = mrpt::serialization::archiveFrom(*m_out);
 	if (m_format == RawlogFormat::ActionsSensoryFrames)
 	{
 		mrpt::obs::CActionRobotMovement2D move;
@@ -46,7 +54,8 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		actions.insert(move);
 		mrpt::obs::CSensoryFrame sf;
 		for (const auto& o : frame.observations) sf.insert(o);
-		arch << actions << sf;
+		write(actions);
+		write(sf);
 	}
 	else
 	{
@@ -54,19 +63,15 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		odo->sensorLabel = "ODOMETRY";
 		odo->timestamp = frame.timestamp;
 		odo->odometry = frame.odometry;
-		arch << *odo;
-		for (const auto& o : frame.observations) arch << *o;
+		write(*odo);
+		for (const auto& o : frame.observations) write(*o);
 	}
 	m_lastOdometry = frame.odometry;
 	++m_frames;
 }
 
-void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry)
-{
-	auto arch = mrpt::serialization::archiveFrom(*m_out);
-	arch << entry;
-}
+void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { write(entry); }
 
-void RawlogWriter::close() { m_out->close(); }
+void RawlogWriter::close() { m_gzip->close(); }
 
 }  // namespace lvf::common

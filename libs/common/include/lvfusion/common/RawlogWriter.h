@@ -16,13 +16,10 @@
 #include <string>
 #include <vector>
 
-namespace mrpt::io
-{
-class CFileGZOutputStream;
-}
-
 namespace lvf::common
 {
+class GzipWriterThread;
+
 enum class RawlogFormat
 {
 	ActionsSensoryFrames,
@@ -54,13 +51,20 @@ class RawlogWriter
 	/** Writes one rawlog entry as it is (an observation, an action
 	 * collection or a sensory frame), for tools that pass a log through. */
 	void appendEntry(const mrpt::serialization::CSerializable& entry);
-	/** Flushes and closes; the destructor does this too. */
+	/** Waits until everything is written, closes, and throws InputError
+	 * if the file could not be written (a full disk); the destructor
+	 * closes too, silently. */
 	void close();
 
 	size_t framesWritten() const { return m_frames; }
 
    private:
-	std::unique_ptr<mrpt::io::CFileGZOutputStream> m_out;
+	/** Serializes one object and queues its bytes for the file. */
+	void write(const mrpt::serialization::CSerializable& object);
+
+	/** Compresses and writes on a thread of its own, so that the caller
+	 * goes on while it does. */
+	std::unique_ptr<GzipWriterThread> m_gzip;
 	RawlogFormat m_format;
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
 	mrpt::poses::CPose2D m_lastOdometry;
