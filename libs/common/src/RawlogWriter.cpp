@@ -1,12 +1,10 @@
-#include "GzipWriterThread.h"
-
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
-#include <mrpt/serialization/archiveFrom_std_vector.h>
 
 namespace lvf::common
 {
@@ -21,24 +19,19 @@ RawlogFormat parseRawlogFormat(const std::string& name, const std::string& sourc
 RawlogWriter::RawlogWriter(
 	const std::string& path, RawlogFormat format,
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel)
-	// Level 1: most of a log is camera images, which compress little at
-	// any level (to about 3/4 at level 1), so a higher one costs time for
-	// next to nothing.
-	: m_gzip(std::make_unique<GzipWriterThread>(path, 1)), m_format(format), m_motionModel(motionModel)
+	: m_path(path),
+	  m_out(std::make_unique<mrpt::io::CFileGZOutputStream>()),
+	  m_format(format),
+	  m_motionModel(motionModel)
 {
+	// Level 1: most of a log is camera images (MRPT 2 stores them raw),
+	// which compress little at any level (to about 3/4 at level 1), so a
+	// higher one costs time for next to nothing.
+	if (!m_out->open(path, 1))
+		throw InputError(path, "", "cannot open for writing");
 }
 
 RawlogWriter::~RawlogWriter() = default;
-
-void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
-{
-	// The same bytes the archive would write to the file, handed to the
-	// compressing thread.
-	std::vector<uint8_t> bytes;
-	auto arch = mrpt::serialization::archiveFrom(bytes);
-	arch << object;
-	m_gzip->write(std::move(bytes));
-}
 
 void RawlogWriter::append(const RawlogFrame& frame)
 {
@@ -72,6 +65,21 @@ void RawlogWriter::append(const RawlogFrame& frame)
 
 void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { write(entry); }
 
-void RawlogWriter::close() { m_gzip->close(); }
+void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
+{
+	try
+	{
+		auto arch = mrpt::serialization::archiveFrom(*m_out);
+		arch << object;
+	}
+	catch (const std::exception&)
+	{
+		// MRPT's archive throws with its own stack of frames; one line is
+		// what every bad input and output gets here.
+		throw InputError(m_path, "", "cannot be written (disk full?)");
+	}
+}
+
+void RawlogWriter::close() { m_out->close(); }
 
 }  // namespace lvf::common

@@ -16,10 +16,13 @@
 #include <string>
 #include <vector>
 
+namespace mrpt::io
+{
+class CFileGZOutputStream;
+}
+
 namespace lvf::common
 {
-class GzipWriterThread;
-
 enum class RawlogFormat
 {
 	ActionsSensoryFrames,
@@ -49,22 +52,22 @@ class RawlogWriter
 
 	void append(const RawlogFrame& frame);
 	/** Writes one rawlog entry as it is (an observation, an action
-	 * collection or a sensory frame), for tools that pass a log through. */
+	 * collection or a sensory frame), for tools that pass a log through.
+	 * This and append() throw InputError naming the file if it cannot be
+	 * written. */
 	void appendEntry(const mrpt::serialization::CSerializable& entry);
-	/** Waits until everything is written, closes, and throws InputError
-	 * if the file could not be written (a full disk); the destructor
-	 * closes too, silently. */
+	/** Flushes and closes; the destructor does this too. */
 	void close();
 
 	size_t framesWritten() const { return m_frames; }
 
    private:
-	/** Serializes one object and queues its bytes for the file. */
+	/** Serializes one object to the file; InputError naming the file if it
+	 * cannot be written (a full disk). */
 	void write(const mrpt::serialization::CSerializable& object);
 
-	/** Compresses and writes on a thread of its own, so that the caller
-	 * goes on while it does. */
-	std::unique_ptr<GzipWriterThread> m_gzip;
+	std::string m_path;
+	std::unique_ptr<mrpt::io::CFileGZOutputStream> m_out;
 	RawlogFormat m_format;
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
 	mrpt::poses::CPose2D m_lastOdometry;
