@@ -164,10 +164,9 @@ TEST(Determinism, SameSeedSameBitsOtherSeedOtherNoise)
 	EXPECT_EQ(a[1].truePose, c[1].truePose);
 }
 
-// The file is compressed and written on a thread of its own: a write that
-// fails there (here /dev/full, a disk with no room) is reported to the
-// caller, naming the file, not lost with the thread.
-TEST(RawlogWriterErrors, AFullDiskIsReportedByCloseNamingTheFile)
+// A write that fails (here /dev/full, a disk with no room) is one
+// InputError naming the file, not MRPT's archive exception with its stack.
+TEST(RawlogWriterErrors, AFullDiskIsReportedNamingTheFile)
 {
 	if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
 	const auto frames = simulate(5, 2);
