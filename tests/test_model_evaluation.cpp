@@ -336,7 +336,9 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 	// - d, y = v; the evaluation's NCC is computed from it, so it must be
 	// remap's to the last bit. A simulated frame with the room's model, and
 	// disparities of every kind: fractional, none (0) or negative, sending
-	// the column past either edge of the image.
+	// the column past either edge of the image (the vector path takes
+	// blocks of eight columns, the plain one those where a column falls
+	// near or past an edge).
 	const Scene scene = evaluate(lvf::test::roomWorld("  - {pose: [2.5, 0.3, 0.5], size: [0.4, 0.4, 0.4]}\n"));
 	cv::RNG rng(3);
 	cv::Mat1f odd(scene.right.size());
@@ -348,9 +350,16 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 	for (const auto& [disparity, geometry] :
 		 {std::pair{scene.eval.modelDisparity, scene.stereo.geometry()}, std::pair{odd, shifted}})
 	{
-		cv::Mat1f warped;
-		cv::Mat1b unverifiable;
+		cv::Mat1f warped, warpedMarked;
+		cv::Mat1b unverifiable, unverifiableMarked;
 		warpByModel(scene.right, disparity, geometry, warped, unverifiable);
+		// Columns rectification filled from outside the camera's image make
+		// the pixels sampling next to them unverifiable too, nothing else.
+		cv::Mat1b filled(scene.right.size());
+		rng.fill(filled, cv::RNG::UNIFORM, 0, 2);
+		filled *= 255;
+		warpByModel(scene.right, disparity, geometry, warpedMarked, unverifiableMarked, filled);
+		ASSERT_EQ(std::memcmp(warped.data, warpedMarked.data, warped.total() * sizeof(float)), 0);
 		cv::Mat1f mapX(disparity.size()), mapY(disparity.size()), rightF, expected;
 		for (int v = 0; v < mapX.rows; v++)
 			for (int u = 0; u < mapX.cols; u++)
@@ -367,6 +376,10 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 					<< "row " << v << " column " << u << " (x " << mapX(v, u) << "): " << warped(v, u) << " vs " << expected(v, u);
 				const bool outside = disparity(v, u) <= 0 || mapX(v, u) < 0 || mapX(v, u) > mapX.cols - 1;
 				ASSERT_EQ(unverifiable(v, u) != 0, outside) << "row " << v << " column " << u;
+				const int column = static_cast<int>(mapX(v, u));
+				const bool nextToFilled =
+					!outside && (filled(v, column) || filled(v, std::min(column + 1, filled.cols - 1)));
+				ASSERT_EQ(unverifiableMarked(v, u) != 0, outside || nextToFilled) << "row " << v << " column " << u;
 			}
 	}
 	EXPECT_EQ(compared, 2 * scene.right.total());

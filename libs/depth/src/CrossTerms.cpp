@@ -1,11 +1,11 @@
 #include <lvfusion/common/RowBands.h>
+#include <lvfusion/common/VectorClones.h>
 #include <lvfusion/depth/CrossTerms.h>
 
 #include <cassert>
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef LVF_HAVE_AVX2_INTRINSICS
 #include <immintrin.h>
-#define LVF_HAVE_AVX2_PATH 1
 #endif
 
 namespace lvf::depth
@@ -38,7 +38,7 @@ int32_t crossColumn(const cv::Mat1i& leftPairs, const cv::Mat1i& rightPairs, int
 	return sum;
 }
 
-#ifdef LVF_HAVE_AVX2_PATH
+#ifdef LVF_HAVE_AVX2_INTRINSICS
 #define LVF_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
 
 /** acc[k] for the 8 V columns from x on, V registers of eight: for each
@@ -102,12 +102,6 @@ __attribute__((target("avx2"))) bool crossTermsAvx2(
 		default: return false;
 	}
 }
-
-bool cpuHasAvx2()
-{
-	static const bool has = __builtin_cpu_supports("avx2");
-	return has;
-}
 #endif
 }  // namespace
 
@@ -123,8 +117,8 @@ void crossTerms(
 	int32_t* acc)
 {
 	assert(u - half >= 0 && u + half < leftPairs.cols && x0 - half >= 0 && x0 + n - 1 + half < rightPairs.cols);
-#ifdef LVF_HAVE_AVX2_PATH
-	if (cpuHasAvx2() && crossTermsAvx2(leftPairs, rightPairs, u, v, x0, n, half, acc)) return;
+#ifdef LVF_HAVE_AVX2_INTRINSICS
+	if (lvf::common::cpuHasAvx2() && crossTermsAvx2(leftPairs, rightPairs, u, v, x0, n, half, acc)) return;
 #endif
 	crossTermsPlain(leftPairs, rightPairs, u, v, x0, n, half, acc);
 }

@@ -1,8 +1,14 @@
 #include <lvfusion/common/RowBands.h>
+#include <lvfusion/common/VectorClones.h>
 #include <lvfusion/evaluation/ModelWarp.h>
 
 #include <algorithm>
 #include <array>
+#include <cstring>
+
+#ifdef LVF_HAVE_AVX2_INTRINSICS
+#include <immintrin.h>
+#endif
 
 namespace lvf::evaluation
 {
@@ -20,35 +26,29 @@ std::array<float, kSubpixelSteps> rightWeights()
 	for (int k = 0; k < kSubpixelSteps; k++) w[size_t(k)] = (1.f / kSubpixelSteps) * float(k);
 	return w;
 }
-}  // namespace
 
-void warpByModel(
-	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged)
+/** One row of the warp: the right image's row `row` sampled where the
+ * model sends each left column. */
+struct WarpRow
 {
-	static const std::array<float, kSubpixelSteps> kRightWeight = rightWeights();
-	const cv::Size size = right.size();
-	warped.create(size);
-	unverifiable.create(size);
-	const int width = size.width;
-	const float cxOffset = static_cast<float>(geometry.cxOffset), lastColumn = static_cast<float>(width - 1);
-	const bool marked = !rightNotImaged.empty();
-	// Rows are independent: on OpenCV's threads (RowBands.h).
-	lvf::common::forEachRow(size.height, [&](int v) {
-		const float* d = modelDisparity.ptr<float>(v);
-		const uint8_t* row = right.ptr<uint8_t>(v);
-		float* out = warped.ptr<float>(v);
-		uint8_t* bad = unverifiable.ptr<uint8_t>(v);
-		const uint8_t* marks = marked ? rightNotImaged.ptr<uint8_t>(v) : nullptr;
-		for (int u = 0; u < width; u++)
+	const float* disparity;
+	const uint8_t* row;
+	float* out;
+	uint8_t* bad;
+	int width;
+	float cxOffset;
+
+	float columnAt(int u) const { return static_cast<float>(u) - disparity[u] + cxOffset; }
+
+	/** Columns [u0, u1), one at a time. */
+	void plain(int u0, int u1) const
+	{
+		static const std::array<float, kSubpixelSteps> kRightWeight = rightWeights();
+		const float lastColumn = static_cast<float>(width - 1);
+		for (int u = u0; u < u1; u++)
 		{
-			const float x = static_cast<float>(u) - d[u] + cxOffset;
-			bad[u] = d[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
-			if (marks && !bad[u])
-			{
-				const int column = static_cast<int>(x);
-				if (marks[column] | marks[std::min(column + 1, width - 1)]) bad[u] = 255;
-			}
+			const float x = columnAt(u);
+			bad[u] = disparity[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
 			// remap rounds the column to the nearest 1/32 (ties to even) and
 			// weights its two neighbours; outside the image they are 0.
 			const int fixed = cvRound(x * kSubpixelSteps);
@@ -61,6 +61,95 @@ void warpByModel(
 			else
 				out[u] = (left >= 0 ? float(row[left]) : 0.f) * w0 + (left + 1 < width ? float(row[left + 1]) : 0.f) * w1;
 		}
+	}
+
+	/** Also unverifiable: pixels whose column lies next to one that
+	 * rectification filled from outside the camera's image. */
+	void markFilled(const uint8_t* marks) const
+	{
+		for (int u = 0; u < width; u++)
+		{
+			if (bad[u]) continue;
+			const int column = static_cast<int>(columnAt(u));
+			if (marks[column] | marks[std::min(column + 1, width - 1)]) bad[u] = 255;
+		}
+	}
+
+#ifdef LVF_HAVE_AVX2_INTRINSICS
+	/** The same, eight columns at a time: the two neighbours of each
+	 * fetched by one gather (which the compiler does not emit for bytes;
+	 * the plain row took 0.65 ms of a 640x480 frame, this 0.23 in a
+	 * throw-away timing loop). The same operations as plain(), so the same
+	 * bits: no fused multiply-add (AVX2 has none), the rounding
+	 * conversion in the default round-to-nearest-even as cvRound's.
+	 * Blocks with a column whose 4-byte gather would leave [0, width)
+	 * go the plain way. */
+	__attribute__((target("avx2"))) void avx2() const
+	{
+		// The unverifiable flags of eight columns from the sign mask.
+		static const auto kFlagBytes = [] {
+			std::array<uint64_t, 256> t{};
+			for (int m = 0; m < 256; m++)
+				for (int j = 0; j < 8; j++)
+					if (m >> j & 1) t[size_t(m)] |= uint64_t(255) << (8 * j);
+			return t;
+		}();
+		const __m256 lanes = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7), zero = _mm256_setzero_ps();
+		const __m256 lastColumn = _mm256_set1_ps(static_cast<float>(width - 1));
+		const __m256i lowByte = _mm256_set1_epi32(0xff), lastGather = _mm256_set1_epi32(width - 4);
+		int u = 0;
+		for (; u + 8 <= width; u += 8)
+		{
+			const __m256 d = _mm256_loadu_ps(disparity + u);
+			const __m256 x = _mm256_add_ps(
+				_mm256_sub_ps(_mm256_add_ps(_mm256_set1_ps(static_cast<float>(u)), lanes), d), _mm256_set1_ps(cxOffset));
+			const __m256 outside = _mm256_or_ps(
+				_mm256_or_ps(_mm256_cmp_ps(d, zero, _CMP_LE_OQ), _mm256_cmp_ps(x, zero, _CMP_LT_OQ)),
+				_mm256_cmp_ps(x, lastColumn, _CMP_GT_OQ));
+			const __m256i fixed = _mm256_cvtps_epi32(_mm256_mul_ps(x, _mm256_set1_ps(kSubpixelSteps)));
+			const __m256i left = _mm256_srai_epi32(fixed, kSubpixelBits);
+			const __m256i beyond = _mm256_or_si256(
+				_mm256_cmpgt_epi32(_mm256_setzero_si256(), left), _mm256_cmpgt_epi32(left, lastGather));
+			if (!_mm256_testz_si256(beyond, beyond))
+			{
+				plain(u, u + 8);
+				continue;
+			}
+			const uint64_t flags = kFlagBytes[size_t(_mm256_movemask_ps(outside))];
+			std::memcpy(bad + u, &flags, sizeof flags);
+			const __m256i pairs = _mm256_i32gather_epi32(reinterpret_cast<const int*>(row), left, 1);
+			const __m256 p0 = _mm256_cvtepi32_ps(_mm256_and_si256(pairs, lowByte));
+			const __m256 p1 = _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(pairs, 8), lowByte));
+			const __m256 w1 = _mm256_mul_ps(
+				_mm256_set1_ps(1.f / kSubpixelSteps),
+				_mm256_cvtepi32_ps(_mm256_and_si256(fixed, _mm256_set1_epi32(kSubpixelSteps - 1))));
+			const __m256 w0 = _mm256_sub_ps(_mm256_set1_ps(1.f), w1);
+			_mm256_storeu_ps(out + u, _mm256_add_ps(_mm256_mul_ps(p0, w0), _mm256_mul_ps(p1, w1)));
+		}
+		plain(u, width);
+	}
+#endif
+};
+}  // namespace
+
+void warpByModel(
+	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
+	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged)
+{
+	const cv::Size size = right.size();
+	warped.create(size);
+	unverifiable.create(size);
+	// Rows are independent: on OpenCV's threads (RowBands.h).
+	lvf::common::forEachRow(size.height, [&](int v) {
+		const WarpRow row{modelDisparity.ptr<float>(v), right.ptr<uint8_t>(v), warped.ptr<float>(v),
+			unverifiable.ptr<uint8_t>(v), size.width, static_cast<float>(geometry.cxOffset)};
+#ifdef LVF_HAVE_AVX2_INTRINSICS
+		if (lvf::common::cpuHasAvx2())
+			row.avx2();
+		else
+#endif
+			row.plain(0, size.width);
+		if (!rightNotImaged.empty()) row.markFilled(rightNotImaged.ptr<uint8_t>(v));
 	});
 }
 

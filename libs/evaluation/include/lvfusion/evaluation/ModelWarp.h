@@ -21,7 +21,7 @@ namespace lvf::evaluation
  * neighbours weighted from remap's table. Written by hand because the
  * warp moves pixels along rows only: remap's two-dimensional
  * interpolation and the two float maps it needs took 1.5 ms of a 640x480
- * frame, this 0.45. */
+ * frame, this 0.65 one column at a time and 0.23 with AVX2 gathers. */
 void warpByModel(
 	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
 	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged = {});
