@@ -2,11 +2,9 @@
 
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -154,9 +152,10 @@ bool FusionOutputs::add(
 
 void FusionOutputs::close()
 {
-	m_csv.close();
-	m_bearingsCsv.close();
-	if (m_pointsCsv.is_open()) m_pointsCsv.close();
+	using lvf::common::closeWritten;
+	closeWritten(m_csv, m_files.stage(m_name + "_frames.csv"));
+	closeWritten(m_bearingsCsv, m_files.stage(m_name + "_bearings.csv"));
+	if (m_pointsCsv.is_open()) closeWritten(m_pointsCsv, m_files.stage(m_name + "_points.csv"));
 	lvf::common::saveGrid(m_laserGrid, m_files.stage(m_name + "_laser.gridmap.gz"));
 	lvf::common::saveGrid(m_fusedGrid, m_files.stage(m_name + "_fused.gridmap.gz"));
 	std::vector<cv::Mat> pictures;
@@ -166,7 +165,7 @@ void FusionOutputs::close()
 		grid.getAsImage(img, false, true);	// north up
 		pictures.push_back(img.asCvMat<cv::Mat>(mrpt::img::DEEP_COPY));
 	}
-	cv::imwrite(m_files.stage(m_name + "_grids.png"),
+	lvf::common::writeImage(m_files.stage(m_name + "_grids.png"),
 		lvf::common::sideBySide(pictures, {"laser only", "laser + vision"}));
 }
 

@@ -1,6 +1,7 @@
 #include "TruthFiles.h"
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
 
@@ -24,6 +25,7 @@ void writeGroundTruthPose(const std::string& path, mrpt::Clock::time_point stamp
 	auto out = openForWriting(path);
 	out << "# ground-truth robot poses: frame timestamp[s] x[m] y[m] yaw[rad]\n";
 	out << mrpt::format("%zu %.6f %.6f %.6f %.6f\n", size_t(0), mrpt::Clock::toDouble(stamp), 0.0, 0.0, 0.0);
+	lvf::common::closeWritten(out, path);
 }
 
 void writeTruthScan(
@@ -37,6 +39,7 @@ void writeTruthScan(
 	out << "\n" << 0 << mrpt::format(",%.6f", mrpt::Clock::toDouble(scan.timestamp));
 	for (float r : truth) out << (std::isfinite(r) ? mrpt::format(",%.4f", r) : std::string(",inf"));
 	out << "\n";
+	lvf::common::closeWritten(out, path);
 }
 
 }  // namespace lvf::apps

@@ -4,9 +4,9 @@
 
 #include <lvfusion/common/GridOutputs.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include <fstream>
 
@@ -26,10 +26,12 @@ void writeMapPlans(
 		std::ofstream pathFile(files.stage(base + "_path.txt"));
 		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
 		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
+		lvf::common::closeWritten(pathFile, files.stage(base + "_path.txt"));
 		lvf::common::saveGrid(*p.grid, files.stage(base + "_map.gridmap.gz"));
 		mrpt::img::CImage plain;
 		p.grid->getAsImage(plain);	// north up
-		plain.saveToFile(files.stage(base + "_map.png"));
+		const std::string picture = files.stage(base + "_map.png");
+		lvf::common::requireWritten(plain.saveToFile(picture), picture);
 
 		const lvf::planning::TraversableGrid grown(*p.grid, planner.robotRadius, planner.obstacleBelow);
 		csv << mrpt::format(
@@ -47,7 +49,8 @@ void writeMapPlans(
 	std::vector<cv::Mat> pictures;
 	for (const auto& grid : lvf::common::onCommonExtent(grids))
 		pictures.push_back(drawPathsOnGrid(grid, drawn, ends.start, ends.goal));
-	cv::imwrite(files.stage(name + "_paths.png"), lvf::common::sideBySide(pictures, labels));
+	lvf::common::closeWritten(csv, files.stage(name + "_plans.csv"));
+	lvf::common::writeImage(files.stage(name + "_paths.png"), lvf::common::sideBySide(pictures, labels));
 }
 
 /** Plans on each map. A start or goal the user gave must be usable (an

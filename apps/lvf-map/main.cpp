@@ -21,6 +21,7 @@
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <lvfusion/metrics/ScanOnMap.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -206,7 +207,8 @@ int run(int argc, char** argv)
 		if (grid)
 		{
 			lvf::common::saveGrid(*grid, files.stage(name + "_prior_map.gridmap.gz"));
-			grid->saveAsBitmapFile(files.stage(name + "_prior_map.png"));
+			const std::string picture = files.stage(name + "_prior_map.png");
+			lvf::common::requireWritten(grid->saveAsBitmapFile(picture), picture);
 		}
 	}
 	lvf::apps::writeMapPlans(files, name, plans, ends, config.planner);

@@ -1,5 +1,6 @@
 #include "BatchTable.h"
 
+#include <lvfusion/common/WrittenFiles.h>
 #include <mrpt/core/format.h>
 
 #include <fstream>
@@ -26,6 +27,7 @@ void writeBatchCsv(const std::vector<BatchRow>& rows, const std::string& path)
 			m.reached() ? 1 : 0, m.collisions, m.time, m.pathLength, m.finalDistance,
 			m.minClearance, m.meanCycleMs, detail.c_str());
 	}
+	lvf::common::closeWritten(csv, path);
 }
 
 namespace

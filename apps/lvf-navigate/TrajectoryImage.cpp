@@ -1,10 +1,10 @@
 #include "TrajectoryImage.h"
 
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/simulation/GroundTruth.h>
 #include <mrpt/img/CImage.h>
 
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace lvf::apps
@@ -114,7 +114,7 @@ void writeTrajectoryImage(
 	shown = cv::Rect(shown.x - margin, shown.y - margin, shown.width + 2 * margin, shown.height + 2 * margin) &
 		cv::Rect(0, 0, canvas.cols, canvas.rows);
 	if (shown.area() == 0) shown = cv::Rect(0, 0, canvas.cols, canvas.rows);
-	cv::imwrite(path, withLegend(canvas(shown)));
+	lvf::common::writeImage(path, withLegend(canvas(shown)));
 }
 
 }  // namespace lvf::apps

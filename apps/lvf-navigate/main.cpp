@@ -12,6 +12,7 @@
 #include <lvfusion/common/ShippedFiles.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <lvfusion/navigation/HolonomicMethods.h>
 #include <lvfusion/navigation/NavigationRun.h>
@@ -168,7 +169,7 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 		poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
 			mrpt::poses::CPose2D(m.trajectory[k])});
 	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
-	std::ofstream(files.stage(name + "_metrics.txt")) << line << "\n" << m.detail << "\n";
+	lvf::common::writeTextFile(files.stage(name + "_metrics.txt"), line + "\n" + m.detail + "\n");
 	files.commit();
 	std::cout << line << "\n";
 	if (!quiet)
@@ -204,7 +205,7 @@ int runBatch(
 	lvf::apps::writeBatchCsv(rows, files.stage("batch.csv"));
 	std::ostringstream table;
 	lvf::apps::printBatchTable(rows, table);
-	std::ofstream(files.stage("batch.txt")) << table.str();
+	lvf::common::writeTextFile(files.stage("batch.txt"), table.str());
 	files.commit();
 	std::cout << table.str() << "  wrote batch.csv, batch.txt in " << files.outputDir() << "\n";
 	return lvf::common::kExitOk;

@@ -1,10 +1,9 @@
 #include "GroundTruthWriter.h"
 
+#include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/simulation/GroundTruth.h>
 #include <mrpt/core/format.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
 
@@ -51,24 +50,24 @@ void GroundTruthWriter::add(
 	writeScanRow(m_seenTruth, f, f.seenTruthScan);
 
 	if (m_writeDepth)
-		cv::imwrite(
-			m_files.stage(mrpt::format("%s_depth/%06zu.pfm", m_name.c_str(), f.index)),
-			f.leftDepth);
+		lvf::common::writeImage(
+			m_files.stage(mrpt::format("%s_depth/%06zu.pfm", m_name.c_str(), f.index)), f.leftDepth);
 }
 
 void GroundTruthWriter::writeObstacleMap(const lvf::simulation::World& world)
 {
 	const auto grid = lvf::simulation::obstacleGrid(world);
-	mrpt::io::CFileGZOutputStream out(m_files.stage(m_name + "_obstacles.gridmap.gz"));
-	mrpt::serialization::archiveFrom(out) << grid;
-	grid.saveAsBitmapFile(m_files.stage(m_name + "_obstacles.png"));
+	lvf::common::saveGrid(grid, m_files.stage(m_name + "_obstacles.gridmap.gz"));
+	const std::string picture = m_files.stage(m_name + "_obstacles.png");
+	lvf::common::requireWritten(grid.saveAsBitmapFile(picture), picture);
 }
 
 void GroundTruthWriter::close()
 {
-	m_poses.close();
-	m_truth.close();
-	m_seenTruth.close();
+	using lvf::common::closeWritten;
+	closeWritten(m_poses, m_files.stage(m_name + "_gt_poses.txt"));
+	closeWritten(m_truth, m_files.stage(m_name + "_truth_scans.csv"));
+	closeWritten(m_seenTruth, m_files.stage(m_name + "_seen_truth_scans.csv"));
 }
 
 }  // namespace lvf::apps

@@ -1,7 +1,7 @@
 #include "PreviewImage.h"
 
 #include <lvfusion/common/OpenCvCamera.h>
-#include <opencv2/imgcodecs.hpp>
+#include <lvfusion/common/WrittenFiles.h>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
@@ -50,7 +50,7 @@ void writePreviewImage(
 	const auto pixels = lvf::common::pixelsInView(points, stereo.leftCamera);
 	for (size_t k = 0; k < points.size(); k++)
 		if (pixels[k]) cv::circle(canvas, cv::Point(cvRound(pixels[k]->x), cvRound(pixels[k]->y)), 2, colours[k], cv::FILLED);
-	cv::imwrite(path, canvas);
+	lvf::common::writeImage(path, canvas);
 }
 
 }  // namespace lvf::apps

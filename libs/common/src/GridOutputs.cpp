@@ -1,6 +1,5 @@
 #include <lvfusion/common/GridOutputs.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
+#include <lvfusion/common/GzOutputFile.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -9,8 +8,9 @@ namespace lvf::common
 {
 void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath)
 {
-	mrpt::io::CFileGZOutputStream out(gridmapPath);
-	mrpt::serialization::archiveFrom(out) << grid;
+	GzOutputFile out(gridmapPath);
+	out.writeObject(grid);
+	out.close();
 }
 
 std::vector<mrpt::maps::COccupancyGridMap2D> onCommonExtent(

@@ -1,10 +1,9 @@
+#include <lvfusion/common/GzOutputFile.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/serialization/CArchive.h>
 
 namespace lvf::common
 {
@@ -19,16 +18,11 @@ RawlogFormat parseRawlogFormat(const std::string& name, const std::string& sourc
 RawlogWriter::RawlogWriter(
 	const std::string& path, RawlogFormat format,
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions motionModel)
-	: m_path(path),
-	  m_out(std::make_unique<mrpt::io::CFileGZOutputStream>()),
-	  m_format(format),
-	  m_motionModel(motionModel)
-{
 	// Level 1: most of a log is camera images (MRPT 2 stores them raw),
 	// which compress little at any level (to about 3/4 at level 1), so a
 	// higher one costs time for next to nothing.
-	if (!m_out->open(path, 1))
-		throw InputError(path, "", "cannot open for writing");
+	: m_path(path), m_out(std::make_unique<GzOutputFile>(path, 1)), m_format(format), m_motionModel(motionModel)
+{
 }
 
 RawlogWriter::~RawlogWriter() = default;
@@ -65,20 +59,7 @@ void RawlogWriter::append(const RawlogFrame& frame)
 
 void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { write(entry); }
 
-void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
-{
-	try
-	{
-		auto arch = mrpt::serialization::archiveFrom(*m_out);
-		arch << object;
-	}
-	catch (const std::exception&)
-	{
-		// MRPT's archive throws with its own stack of frames; one line is
-		// what every bad input and output gets here.
-		throw InputError(m_path, "", "cannot be written (disk full?)");
-	}
-}
+void RawlogWriter::write(const mrpt::serialization::CSerializable& object) { m_out->writeObject(object); }
 
 void RawlogWriter::close() { m_out->close(); }
 

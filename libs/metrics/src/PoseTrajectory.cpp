@@ -1,4 +1,5 @@
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <mrpt/core/format.h>
@@ -38,6 +39,7 @@ void writePoseFile(const std::string& path, const std::vector<StampedPose>& pose
 	for (const auto& p : poses)
 		out << mrpt::format(
 			"%zu %.6f %.5f %.5f %.6f\n", p.frame, p.timestamp, p.pose.x(), p.pose.y(), p.pose.phi());
+	lvf::common::closeWritten(out, path);
 }
 
 const StampedPose* poseStampedAt(const std::vector<StampedPose>& poses, double timestamp)

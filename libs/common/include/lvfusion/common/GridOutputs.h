@@ -13,7 +13,8 @@
 
 namespace lvf::common
 {
-/** Writes `grid` as a gzip-compressed MRPT archive (.gridmap.gz). */
+/** Writes `grid` as a gzip-compressed MRPT archive (.gridmap.gz);
+ * InputError naming the file if it cannot be written. */
 void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath);
 
 /** Copies of `grids` resized to the extent that holds them all (unknown

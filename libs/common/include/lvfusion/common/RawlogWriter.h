@@ -16,13 +16,10 @@
 #include <string>
 #include <vector>
 
-namespace mrpt::io
-{
-class CFileGZOutputStream;
-}
-
 namespace lvf::common
 {
+class GzOutputFile;
+
 enum class RawlogFormat
 {
 	ActionsSensoryFrames,
@@ -56,7 +53,9 @@ class RawlogWriter
 	 * This and append() throw InputError naming the file if it cannot be
 	 * written. */
 	void appendEntry(const mrpt::serialization::CSerializable& entry);
-	/** Flushes and closes; the destructor does this too. */
+	/** Writes out what is buffered and closes; InputError naming the file
+	 * if that fails (a full disk). The destructor closes too, silently:
+	 * call this to know that the file is whole. */
 	void close();
 
 	size_t framesWritten() const { return m_frames; }
@@ -67,7 +66,7 @@ class RawlogWriter
 	void write(const mrpt::serialization::CSerializable& object);
 
 	std::string m_path;
-	std::unique_ptr<mrpt::io::CFileGZOutputStream> m_out;
+	std::unique_ptr<GzOutputFile> m_out;
 	RawlogFormat m_format;
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
 	mrpt::poses::CPose2D m_lastOdometry;

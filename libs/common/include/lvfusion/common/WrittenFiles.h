@@ -1,0 +1,30 @@
+#pragma once
+// Output files that say when they could not be written. A full disk (or a
+// folder gone) must not leave a short CSV or picture among outputs the run
+// then reports as written: each writer checks, and the app's one line
+// names the file (InputError, exit status 2; the staged outputs are not
+// committed, StagedOutputFiles.h).
+
+#include <opencv2/core.hpp>
+
+#include <fstream>
+#include <string>
+
+namespace lvf::common
+{
+/** Throws InputError naming `path` ("cannot be written (disk full?)")
+ * unless `written`. */
+void requireWritten(bool written, const std::string& path);
+
+/** cv::imwrite, and InputError naming the file if it fails. */
+void writeImage(const std::string& path, const cv::Mat& image);
+
+/** Closes a text output, and InputError naming it if any of it could not
+ * be written. */
+void closeWritten(std::ofstream& out, const std::string& path);
+
+/** Writes `text` as the whole of the file at `path`; InputError naming it
+ * if that fails. */
+void writeTextFile(const std::string& path, const std::string& text);
+
+}  // namespace lvf::common
