@@ -9,6 +9,7 @@
 #include <lvfusion/common/GzOutputFile.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
+#include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/WrittenFiles.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -97,4 +98,18 @@ TEST(GzOutputFile, WritesWhatMrptsGzipStreamReads)
 	EXPECT_EQ(back.getSizeY(), grid.getSizeY());
 	EXPECT_FLOAT_EQ(back.getCell(3, 4), grid.getCell(3, 4));
 	std::filesystem::remove(path);
+}
+
+TEST(StagedOutputFiles, AnErrorNamesTheFileWhereTheUserWillLookForIt)
+{
+	// Files are written into a hidden staging folder and moved into the
+	// output folder at the end; an error while writing one names it in the
+	// output folder.
+	const std::string out = testing::TempDir() + "/staged_names_" + std::to_string(::getpid());
+	lvf::common::StagedOutputFiles files(out);
+	const std::string staged = files.stage("run_frames.csv");
+	const std::string message = InputError(staged, "", "cannot be written (disk full?)").what();
+	const std::string shown = lvf::common::withOutputPaths(message);
+	EXPECT_EQ(shown, out + "/run_frames.csv: cannot be written (disk full?)") << message;
+	std::filesystem::remove_all(out);
 }

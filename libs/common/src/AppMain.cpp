@@ -1,6 +1,7 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProcessMemory.h>
+#include <lvfusion/common/StagedOutputFiles.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <cstdlib>
@@ -18,13 +19,12 @@ int runApp(const std::string& appName, const std::function<int()>& body)
 	}
 	catch (const InputError& e)
 	{
-		std::cerr << appName << ": error: " << e.what() << std::endl;
+		std::cerr << appName << ": error: " << withOutputPaths(e.what()) << std::endl;
 		return kExitBadInput;
 	}
 	catch (const std::exception& e)
 	{
-		std::cerr << appName << ": internal error: " << exceptionMessage(e)
-				  << std::endl;
+		std::cerr << appName << ": internal error: " << withOutputPaths(exceptionMessage(e)) << std::endl;
 		return kExitInternalError;
 	}
 }

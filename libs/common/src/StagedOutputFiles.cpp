@@ -3,12 +3,31 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <mutex>
 #include <unistd.h>
+#include <utility>
 
 namespace fs = std::filesystem;
 
 namespace lvf::common
 {
+namespace
+{
+/** Every staging folder of this process and its output folder; a run
+ * makes a handful, and an error may be printed after its object is gone. */
+std::mutex stagingFoldersMutex;
+std::vector<std::pair<std::string, std::string>> stagingFolders;
+}  // namespace
+
+std::string withOutputPaths(std::string message)
+{
+	const std::lock_guard<std::mutex> lock(stagingFoldersMutex);
+	for (const auto& [staging, output] : stagingFolders)
+		for (size_t at = message.find(staging); at != std::string::npos; at = message.find(staging, at + output.size()))
+			message.replace(at, staging.size(), output);
+	return message;
+}
+
 StagedOutputFiles::StagedOutputFiles(std::string outputDir)
 	: m_outputDir(outputDir.empty() ? "." : std::move(outputDir))  // "" from a bare file name's folder
 {
@@ -29,6 +48,8 @@ StagedOutputFiles::StagedOutputFiles(std::string outputDir)
 	std::error_code ec;
 	fs::create_directories(m_stagingDir, ec);
 	if (ec) throw InputError(m_outputDir, "", "cannot write the outputs here: " + ec.message());
+	const std::lock_guard<std::mutex> lock(stagingFoldersMutex);
+	stagingFolders.emplace_back((fs::path(m_stagingDir) / "").string(), (fs::path(m_outputDir) / "").string());
 }
 
 StagedOutputFiles::~StagedOutputFiles()
@@ -56,13 +77,20 @@ std::string StagedOutputFiles::finalPath(const std::string& relativePath) const
 
 void StagedOutputFiles::commit()
 {
-	fs::create_directories(m_outputDir);
-	for (const auto& entry : m_topLevelEntries)
+	try
 	{
-		const fs::path from = fs::path(m_stagingDir) / entry;
-		const fs::path to = fs::path(m_outputDir) / entry;
-		if (fs::is_directory(to)) fs::remove_all(to);
-		fs::rename(from, to);
+		fs::create_directories(m_outputDir);
+		for (const auto& entry : m_topLevelEntries)
+		{
+			const fs::path from = fs::path(m_stagingDir) / entry;
+			const fs::path to = fs::path(m_outputDir) / entry;
+			if (fs::is_directory(to)) fs::remove_all(to);
+			fs::rename(from, to);
+		}
+	}
+	catch (const fs::filesystem_error& e)
+	{
+		throw InputError(m_outputDir, "", "cannot move the outputs into place: " + e.code().message());
 	}
 	m_committed = true;
 }

@@ -25,7 +25,8 @@ class StagedOutputFiles
 	std::string finalPath(const std::string& relativePath) const;
 
 	/** Moves every staged top-level entry into the output folder (creating
-	 * it if needed), replacing older files of the same name. */
+	 * it if needed), replacing older files of the same name; InputError
+	 * naming the folder if that cannot be done. */
 	void commit();
 
 	const std::string& outputDir() const { return m_outputDir; }
@@ -36,5 +37,11 @@ class StagedOutputFiles
 	std::vector<std::string> m_topLevelEntries;
 	bool m_committed = false;
 };
+
+/** `message` with the staging folders of this process's StagedOutputFiles
+ * replaced by the output folders they stand for, so that an error about a
+ * file being written names it where the user will look for it (runApp
+ * prints every error through this). */
+std::string withOutputPaths(std::string message);
 
 }  // namespace lvf::common
