@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(build-essential cmake pkg-config
+packages=(build-essential cmake pkg-config file
   libmrpt-dev mrpt-apps mrpt-common
   libopencv-dev libeigen3-dev libyaml-cpp-dev zlib1g-dev
   libgtest-dev libbenchmark-dev)

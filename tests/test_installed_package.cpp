@@ -106,3 +106,31 @@ TEST_F(InstalledPackage, AProgramBuiltWithFindPackageFusesAsLvfFuseDoes)
 	EXPECT_EQ(missing.status, 2);
 	EXPECT_EQ(missing.err, "fuse_rawlog: no_such.rawlog: no such rawlog\n");
 }
+
+// The Debian package (cpack, README): the same install under /usr, its
+// runtime dependencies read from the programs, and its lvf-fuse, unpacked
+// anywhere, fuses its own sample.
+TEST_F(CliTest, TheDebianPackageHoldsTheInstallAndNamesItsLibraries)
+{
+	const auto packed = run(LVF_CPACK, "--config '" LVF_BUILD_DIR "/CPackConfig.cmake' -B '" + (m_dir / "deb").string() + "'");
+	ASSERT_EQ(packed.status, 0) << packed.out << packed.err;
+	fs::path deb;
+	for (const auto& entry : fs::directory_iterator(m_dir / "deb"))
+		if (entry.path().extension() == ".deb") deb = entry.path();
+	ASSERT_FALSE(deb.empty()) << packed.out;
+
+	const auto depends = run("dpkg-deb", "-f '" + deb.string() + "' Depends");
+	ASSERT_EQ(depends.status, 0) << depends.err;
+	for (const char* library : {"libmrpt-maps", "libmrpt-nav", "libopencv-core", "libyaml-cpp"})
+		EXPECT_NE(depends.out.find(library), std::string::npos) << library << " in: " << depends.out;
+
+	const fs::path root = m_dir / "root";
+	ASSERT_EQ(run("dpkg-deb", "-x '" + deb.string() + "' '" + root.string() + "'").status, 0);
+	for (const char* file : {"usr/bin/lvf-fuse", "usr/bin/lvf-navigate", "usr/lib/liblvfusion.so",
+			 "usr/share/lvfusion/config/fusion.ini", "usr/share/lvfusion/rawlog_samples/box_room.rawlog",
+			 "usr/lib/cmake/lvfusion/lvfusionConfig.cmake", "usr/include/lvfusion/vfh/CHolonomicVFH.h"})
+		EXPECT_TRUE(fs::exists(root / file)) << file;
+	const auto fused = run((root / "usr/bin/lvf-fuse").string(), "-q --outdir unpacked");
+	ASSERT_EQ(fused.status, 0) << fused.err;
+	EXPECT_TRUE(fs::exists(m_dir / "unpacked/box_room_fused.rawlog"));
+}
