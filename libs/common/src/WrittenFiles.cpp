@@ -2,6 +2,9 @@
 #include <lvfusion/common/WrittenFiles.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include <filesystem>
+#include <vector>
+
 namespace lvf::common
 {
 void requireWritten(bool written, const std::string& path)
@@ -11,16 +14,23 @@ void requireWritten(bool written, const std::string& path)
 
 void writeImage(const std::string& path, const cv::Mat& image)
 {
-	bool written = false;
+	// Encoded in memory, then written and checked as any file is: libpng,
+	// writing the file itself, prints a line of its own before OpenCV
+	// returns false, and the user should get one line.
+	std::vector<uchar> bytes;
+	bool encoded = false;
 	try
 	{
-		written = cv::imwrite(path, image);
+		encoded = cv::imencode(std::filesystem::path(path).extension().string(), image, bytes);
 	}
 	catch (const cv::Exception&)
 	{
-		// OpenCV's encoders throw on some failures and return false on others.
+		// (an extension no encoder takes)
 	}
-	requireWritten(written, path);
+	if (!encoded) throw InputError(path, "", "cannot be encoded as a picture of that type");
+	std::ofstream out(path, std::ios::binary);
+	out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+	closeWritten(out, path);
 }
 
 void closeWritten(std::ofstream& out, const std::string& path)

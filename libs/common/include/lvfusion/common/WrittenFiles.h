@@ -16,7 +16,8 @@ namespace lvf::common
  * unless `written`. */
 void requireWritten(bool written, const std::string& path);
 
-/** cv::imwrite, and InputError naming the file if it fails. */
+/** The picture encoded as its extension says (as cv::imwrite would: the
+ * same bytes), and InputError naming the file if it cannot be written. */
 void writeImage(const std::string& path, const cv::Mat& image);
 
 /** Closes a text output, and InputError naming it if any of it could not
