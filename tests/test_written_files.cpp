@@ -77,9 +77,9 @@ TEST_F(WrittenFiles, AGridThatDoesNotReachTheDiskIsAnError)
 TEST_F(WrittenFiles, TextAndPicturesThatDoNotReachTheDiskAreErrors)
 {
 	expectErrorNaming(kFullDisk, [&] { lvf::common::writeTextFile(kFullDisk, "frame,recall\n0,0.9\n"); });
-	std::ofstream csv(kFullDisk);
+	lvf::common::OutputFile csv(kFullDisk);
 	csv << "frame,recall\n";
-	expectErrorNaming(kFullDisk, [&] { lvf::common::closeWritten(csv, kFullDisk); });
+	expectErrorNaming(kFullDisk, [&] { csv.close(); });
 	const std::string png = "/nonexistent-folder/picture.png";
 	expectErrorNaming(png, [&] { lvf::common::writeImage(png, cv::Mat1b(8, 8, uint8_t(100))); });
 }

@@ -2,7 +2,6 @@
 
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
-#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <opencv2/imgproc.hpp>
@@ -152,10 +151,9 @@ bool FusionOutputs::add(
 
 void FusionOutputs::close()
 {
-	using lvf::common::closeWritten;
-	closeWritten(m_csv, m_files.stage(m_name + "_frames.csv"));
-	closeWritten(m_bearingsCsv, m_files.stage(m_name + "_bearings.csv"));
-	if (m_pointsCsv.is_open()) closeWritten(m_pointsCsv, m_files.stage(m_name + "_points.csv"));
+	m_csv.close();
+	m_bearingsCsv.close();
+	if (m_pointsCsv.is_open()) m_pointsCsv.close();
 	lvf::common::saveGrid(m_laserGrid, m_files.stage(m_name + "_laser.gridmap.gz"));
 	lvf::common::saveGrid(m_fusedGrid, m_files.stage(m_name + "_fused.gridmap.gz"));
 	std::vector<cv::Mat> pictures;

@@ -10,12 +10,12 @@
 //                      scan was made from -- to see why a bearing got its range
 
 #include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservationImage.h>
 
-#include <fstream>
 #include <optional>
 
 namespace lvf::apps
@@ -55,7 +55,7 @@ class FusionOutputs
 	std::string m_name;
 	mrpt::maps::COccupancyGridMap2D m_laserGrid, m_fusedGrid;
 	size_t m_inserted = 0;	//!< frames in the grids
-	std::ofstream m_csv, m_bearingsCsv, m_pointsCsv;  // the last open only if asked for
+	lvf::common::OutputFile m_csv, m_bearingsCsv, m_pointsCsv;  // the last open only if asked for
 
 	void addBearings(
 		size_t frame, const mrpt::obs::CObservation2DRangeScan& laser,

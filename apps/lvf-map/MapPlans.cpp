@@ -8,7 +8,6 @@
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
 
-#include <fstream>
 
 namespace lvf::apps
 {
@@ -18,15 +17,15 @@ void writeMapPlans(
 {
 	std::vector<DrawnPath> drawn;
 	for (const auto& p : plans) drawn.push_back({p.plan.path, p.colour});
-	std::ofstream csv(files.stage(name + "_plans.csv"));
+	lvf::common::OutputFile csv(files.stage(name + "_plans.csv"));
 	csv << "map,outcome,length_m,min_clearance_m,sweeps,start_x,start_y,goal_x,goal_y\n";
 	for (const auto& p : plans)
 	{
 		const std::string base = name + "_" + p.name;
-		std::ofstream pathFile(files.stage(base + "_path.txt"));
+		lvf::common::OutputFile pathFile(files.stage(base + "_path.txt"));
 		pathFile << "# x[m] y[m], start to goal (empty: no path)\n";
 		for (const auto& q : p.plan.path) pathFile << mrpt::format("%.4f %.4f\n", q.x, q.y);
-		lvf::common::closeWritten(pathFile, files.stage(base + "_path.txt"));
+		pathFile.close();
 		lvf::common::saveGrid(*p.grid, files.stage(base + "_map.gridmap.gz"));
 		mrpt::img::CImage plain;
 		p.grid->getAsImage(plain);	// north up
@@ -49,7 +48,7 @@ void writeMapPlans(
 	std::vector<cv::Mat> pictures;
 	for (const auto& grid : lvf::common::onCommonExtent(grids))
 		pictures.push_back(drawPathsOnGrid(grid, drawn, ends.start, ends.goal));
-	lvf::common::closeWritten(csv, files.stage(name + "_plans.csv"));
+	csv.close();
 	lvf::common::writeImage(files.stage(name + "_paths.png"), lvf::common::sideBySide(pictures, labels));
 }
 

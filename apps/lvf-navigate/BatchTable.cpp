@@ -3,7 +3,6 @@
 #include <lvfusion/common/WrittenFiles.h>
 #include <mrpt/core/format.h>
 
-#include <fstream>
 #include <map>
 #include <set>
 #include <tuple>
@@ -12,7 +11,7 @@ namespace lvf::apps
 {
 void writeBatchCsv(const std::vector<BatchRow>& rows, const std::string& path)
 {
-	std::ofstream csv(path);
+	lvf::common::OutputFile csv(path);
 	csv << "room_kind,world,method,sensing,outcome,reached,collisions,time_s,path_m,"
 		   "final_distance_m,min_clearance_m,cycle_ms,detail\n";
 	for (const auto& r : rows)
@@ -27,7 +26,7 @@ void writeBatchCsv(const std::vector<BatchRow>& rows, const std::string& path)
 			m.reached() ? 1 : 0, m.collisions, m.time, m.pathLength, m.finalDistance,
 			m.minClearance, m.meanCycleMs, detail.c_str());
 	}
-	lvf::common::closeWritten(csv, path);
+	csv.close();
 }
 
 namespace

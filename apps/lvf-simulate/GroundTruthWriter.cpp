@@ -64,10 +64,9 @@ void GroundTruthWriter::writeObstacleMap(const lvf::simulation::World& world)
 
 void GroundTruthWriter::close()
 {
-	using lvf::common::closeWritten;
-	closeWritten(m_poses, m_files.stage(m_name + "_gt_poses.txt"));
-	closeWritten(m_truth, m_files.stage(m_name + "_truth_scans.csv"));
-	closeWritten(m_seenTruth, m_files.stage(m_name + "_seen_truth_scans.csv"));
+	m_poses.close();
+	m_truth.close();
+	m_seenTruth.close();
 }
 
 }  // namespace lvf::apps

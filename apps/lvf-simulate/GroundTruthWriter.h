@@ -10,9 +10,9 @@
 // (and main.cpp adds NAME_preview.png, see PreviewImage.h)
 
 #include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 
-#include <fstream>
 #include <string>
 
 namespace lvf::apps
@@ -33,7 +33,7 @@ class GroundTruthWriter
 	lvf::common::StagedOutputFiles& m_files;
 	std::string m_name;
 	bool m_writeDepth;
-	std::ofstream m_poses, m_truth, m_seenTruth;
+	lvf::common::OutputFile m_poses, m_truth, m_seenTruth;
 };
 
 }  // namespace lvf::apps

@@ -1,5 +1,6 @@
 #include <lvfusion/common/GzOutputFile.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/WrittenFiles.h>
 
 #include <mrpt/serialization/CArchive.h>
 #include <zlib.h>
@@ -12,7 +13,6 @@ namespace lvf::common
 namespace
 {
 gzFile asGz(void* file) { return static_cast<gzFile>(file); }
-constexpr const char* kCannotWrite = "cannot be written (disk full?)";
 }  // namespace
 
 GzOutputFile::GzOutputFile(const std::string& path, int level) : m_path(path)
@@ -41,7 +41,7 @@ void GzOutputFile::writeObject(const mrpt::serialization::CSerializable& object)
 	{
 		// MRPT's archive throws on a short write with its own stack of
 		// frames; one line is what every bad input and output gets here.
-		throw InputError(m_path, "", kCannotWrite);
+		requireWritten(false, m_path);
 	}
 }
 
@@ -50,7 +50,7 @@ void GzOutputFile::close()
 	if (!m_file) return;
 	const int result = gzclose(asGz(m_file));
 	m_file = nullptr;
-	if (result != Z_OK) throw InputError(m_path, "", kCannotWrite);
+	requireWritten(result == Z_OK, m_path);
 }
 
 size_t GzOutputFile::Write(const void* buffer, size_t count)

@@ -21,7 +21,7 @@ RawlogWriter::RawlogWriter(
 	// Level 1: most of a log is camera images (MRPT 2 stores them raw),
 	// which compress little at any level (to about 3/4 at level 1), so a
 	// higher one costs time for next to nothing.
-	: m_path(path), m_out(std::make_unique<GzOutputFile>(path, 1)), m_format(format), m_motionModel(motionModel)
+	: m_out(std::make_unique<GzOutputFile>(path, 1)), m_format(format), m_motionModel(motionModel)
 {
 }
 
@@ -41,8 +41,8 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		actions.insert(move);
 		mrpt::obs::CSensoryFrame sf;
 		for (const auto& o : frame.observations) sf.insert(o);
-		write(actions);
-		write(sf);
+		m_out->writeObject(actions);
+		m_out->writeObject(sf);
 	}
 	else
 	{
@@ -50,16 +50,14 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		odo->sensorLabel = "ODOMETRY";
 		odo->timestamp = frame.timestamp;
 		odo->odometry = frame.odometry;
-		write(*odo);
-		for (const auto& o : frame.observations) write(*o);
+		m_out->writeObject(*odo);
+		for (const auto& o : frame.observations) m_out->writeObject(*o);
 	}
 	m_lastOdometry = frame.odometry;
 	++m_frames;
 }
 
-void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { write(entry); }
-
-void RawlogWriter::write(const mrpt::serialization::CSerializable& object) { m_out->writeObject(object); }
+void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { m_out->writeObject(entry); }
 
 void RawlogWriter::close() { m_out->close(); }
 

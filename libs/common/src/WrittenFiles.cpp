@@ -28,22 +28,29 @@ void writeImage(const std::string& path, const cv::Mat& image)
 		// (an extension no encoder takes)
 	}
 	if (!encoded) throw InputError(path, "", "cannot be encoded as a picture of that type");
-	std::ofstream out(path, std::ios::binary);
+	OutputFile out(path, std::ios::binary);
 	out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-	closeWritten(out, path);
+	out.close();
 }
 
-void closeWritten(std::ofstream& out, const std::string& path)
+void OutputFile::open(const std::string& path, std::ios::openmode mode)
 {
-	out.close();
-	requireWritten(!out.fail(), path);
+	m_path = path;
+	std::ofstream::open(path, mode);
+	if (!is_open()) throw InputError(path, "", "cannot open for writing");
+}
+
+void OutputFile::close()
+{
+	std::ofstream::close();
+	requireWritten(!fail(), m_path);
 }
 
 void writeTextFile(const std::string& path, const std::string& text)
 {
-	std::ofstream out(path);
+	OutputFile out(path);
 	out << text;
-	closeWritten(out, path);
+	out.close();
 }
 
 }  // namespace lvf::common

@@ -34,12 +34,12 @@ std::vector<StampedPose> readPoseFile(const std::string& path)
 
 void writePoseFile(const std::string& path, const std::vector<StampedPose>& poses)
 {
-	std::ofstream out(path);
+	lvf::common::OutputFile out(path);
 	out << "# frame timestamp[s] x[m] y[m] yaw[rad]\n";
 	for (const auto& p : poses)
 		out << mrpt::format(
 			"%zu %.6f %.5f %.5f %.6f\n", p.frame, p.timestamp, p.pose.x(), p.pose.y(), p.pose.phi());
-	lvf::common::closeWritten(out, path);
+	out.close();
 }
 
 const StampedPose* poseStampedAt(const std::vector<StampedPose>& poses, double timestamp)

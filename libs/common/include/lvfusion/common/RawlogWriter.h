@@ -61,11 +61,6 @@ class RawlogWriter
 	size_t framesWritten() const { return m_frames; }
 
    private:
-	/** Serializes one object to the file; InputError naming the file if it
-	 * cannot be written (a full disk). */
-	void write(const mrpt::serialization::CSerializable& object);
-
-	std::string m_path;
 	std::unique_ptr<GzOutputFile> m_out;
 	RawlogFormat m_format;
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;

@@ -20,9 +20,24 @@ void requireWritten(bool written, const std::string& path);
  * same bytes), and InputError naming the file if it cannot be written. */
 void writeImage(const std::string& path, const cv::Mat& image);
 
-/** Closes a text output, and InputError naming it if any of it could not
- * be written. */
-void closeWritten(std::ofstream& out, const std::string& path);
+/** A file being written (a std::ofstream) that keeps its path, so that
+ * opening and closing it can name it. */
+class OutputFile : public std::ofstream
+{
+   public:
+	OutputFile() = default;
+	explicit OutputFile(const std::string& path, std::ios::openmode mode = std::ios::out) { open(path, mode); }
+
+	/** Opens `path`; InputError naming it if it cannot be opened for
+	 * writing (as GzOutputFile's). */
+	void open(const std::string& path, std::ios::openmode mode = std::ios::out);
+	/** Closes, and InputError naming the file if any of it could not be
+	 * written. (It hides std::ofstream::close: call it on an OutputFile.) */
+	void close();
+
+   private:
+	std::string m_path;
+};
 
 /** Writes `text` as the whole of the file at `path`; InputError naming it
  * if that fails. */
