@@ -157,11 +157,14 @@ bool HorizontalSurfaceGrowth::hasWitness(
 	for (size_t j : column)
 	{
 		const VisualPoint& q = points[j];
+		// The cheap tests first: most of a column's points are too many
+		// rows away, and the ranges' square roots cost more than the rest.
 		const double rows = step * (p.v - q.v);
-		const double rise = std::abs(q.robot.z() - p.robot.z()), run = groundRange(q) - groundRange(p);
-		if (rows > 0 && rows <= o.witnessStrides * stride && rise <= o.heightTolerance && run >= o.minRangeStep &&
-			rise <= o.maxSlope * run)
-			return true;
+		if (rows <= 0 || rows > o.witnessStrides * stride) continue;
+		const double rise = std::abs(q.robot.z() - p.robot.z());
+		if (rise > o.heightTolerance) continue;
+		const double run = groundRange(q) - groundRange(p);
+		if (run >= o.minRangeStep && rise <= o.maxSlope * run) return true;
 	}
 	return false;
 }
