@@ -1,8 +1,10 @@
 // Outputs that could not be written are errors naming the file, not short
 // files the run reports as written. /dev/full stands for a full disk: it
-// takes a file's opening and fails every write that reaches it. Each case
-// writes less than the writer buffers, so that only closing the file can
-// tell -- the case MRPT's own gzip stream stays silent about.
+// takes a file's opening and fails every write that reaches it. Most cases
+// write less than the writer buffers, so that only closing the file can
+// tell -- the case MRPT's own gzip stream stays silent about; a rawlog's
+// entries are also written on a thread of their own, whose failure the
+// next entry or the close must report.
 
 #include <gtest/gtest.h>
 #include <lvfusion/common/GridOutputs.h>
@@ -13,6 +15,7 @@
 #include <lvfusion/common/WrittenFiles.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -66,6 +69,21 @@ TEST_F(WrittenFiles, ARawlogThatDoesNotReachTheDiskFailsOnClose)
 	lvf::common::RawlogWriter writer(kFullDisk, lvf::common::RawlogFormat::Observations);
 	writer.appendEntry(*odometryReading());  // a few bytes: buffered by zlib
 	expectErrorNaming(kFullDisk, [&] { writer.close(); });
+}
+
+TEST_F(WrittenFiles, ARawlogThatRunsOutOfDiskAfterSomeEntriesIsAnError)
+{
+	// Entries far larger than zlib buffers: the writing thread's first
+	// write to the disk fails, and a later entry or the close says so.
+	lvf::common::RawlogWriter writer(kFullDisk, lvf::common::RawlogFormat::Observations);
+	cv::Mat1b noise(480, 640);
+	cv::randu(noise, 0, 256);  // next to incompressible
+	mrpt::obs::CObservationImage picture;
+	picture.image = mrpt::img::CImage(noise, mrpt::img::DEEP_COPY);
+	expectErrorNaming(kFullDisk, [&] {
+		for (int k = 0; k < 50; k++) writer.appendEntry(picture);
+		writer.close();
+	});
 }
 
 TEST_F(WrittenFiles, AGridThatDoesNotReachTheDiskIsAnError)

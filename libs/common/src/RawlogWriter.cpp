@@ -1,9 +1,12 @@
-#include <lvfusion/common/GzOutputFile.h>
+#include "GzWriterThread.h"
+
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/archiveFrom_std_vector.h>
 
 namespace lvf::common
 {
@@ -21,11 +24,20 @@ RawlogWriter::RawlogWriter(
 	// Level 1: most of a log is camera images (MRPT 2 stores them raw),
 	// which compress little at any level (to about 3/4 at level 1), so a
 	// higher one costs time for next to nothing.
-	: m_out(std::make_unique<GzOutputFile>(path, 1)), m_format(format), m_motionModel(motionModel)
+	: m_out(std::make_unique<GzWriterThread>(path, 1)), m_format(format), m_motionModel(motionModel)
 {
 }
 
 RawlogWriter::~RawlogWriter() = default;
+
+void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
+{
+	// The bytes MRPT's archive would write to the file, handed over whole.
+	std::vector<uint8_t> bytes;
+	auto archive = mrpt::serialization::archiveFrom(bytes);
+	archive << object;
+	m_out->write(std::move(bytes));
+}
 
 void RawlogWriter::append(const RawlogFrame& frame)
 {
@@ -41,8 +53,8 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		actions.insert(move);
 		mrpt::obs::CSensoryFrame sf;
 		for (const auto& o : frame.observations) sf.insert(o);
-		m_out->writeObject(actions);
-		m_out->writeObject(sf);
+		write(actions);
+		write(sf);
 	}
 	else
 	{
@@ -50,14 +62,14 @@ void RawlogWriter::append(const RawlogFrame& frame)
 		odo->sensorLabel = "ODOMETRY";
 		odo->timestamp = frame.timestamp;
 		odo->odometry = frame.odometry;
-		m_out->writeObject(*odo);
-		for (const auto& o : frame.observations) m_out->writeObject(*o);
+		write(*odo);
+		for (const auto& o : frame.observations) write(*o);
 	}
 	m_lastOdometry = frame.odometry;
 	++m_frames;
 }
 
-void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { m_out->writeObject(entry); }
+void RawlogWriter::appendEntry(const mrpt::serialization::CSerializable& entry) { write(entry); }
 
 void RawlogWriter::close() { m_out->close(); }
 

@@ -18,7 +18,7 @@
 
 namespace lvf::common
 {
-class GzOutputFile;
+class GzWriterThread;
 
 enum class RawlogFormat
 {
@@ -50,18 +50,25 @@ class RawlogWriter
 	void append(const RawlogFrame& frame);
 	/** Writes one rawlog entry as it is (an observation, an action
 	 * collection or a sensory frame), for tools that pass a log through.
-	 * This and append() throw InputError naming the file if it cannot be
-	 * written. */
+	 * Entries are written on a thread of their own: this and append()
+	 * throw the InputError naming the file once an earlier entry could
+	 * not be written. */
 	void appendEntry(const mrpt::serialization::CSerializable& entry);
-	/** Writes out what is buffered and closes; InputError naming the file
-	 * if that fails (a full disk). The destructor closes too, silently:
-	 * call this to know that the file is whole. */
+	/** Waits until everything is written and closes; InputError naming
+	 * the file if any of it could not be written (a full disk). The
+	 * destructor closes too, silently: call this to know that the file is
+	 * whole. */
 	void close();
 
 	size_t framesWritten() const { return m_frames; }
 
    private:
-	std::unique_ptr<GzOutputFile> m_out;
+	/** Serializes one entry and hands its bytes to the writing thread. */
+	void write(const mrpt::serialization::CSerializable& object);
+
+	/** Deflates and writes on a thread of its own, while the caller goes
+	 * on (GzWriterThread.h). */
+	std::unique_ptr<GzWriterThread> m_out;
 	RawlogFormat m_format;
 	mrpt::obs::CActionRobotMovement2D::TMotionModelOptions m_motionModel;
 	mrpt::poses::CPose2D m_lastOdometry;
