@@ -19,30 +19,36 @@ class ThreadsOption
 	explicit ThreadsOption(TCLAP::CmdLine& cmd)
 		: m_arg("", "threads",
 			  "Threads for the fusion's model check and depth search (OpenCV's pool, at most one per CPU "
-			  "the process may use; 0: OpenCV's own count, one per core; the results are the same on any "
-			  "number) (default 0)",
+			  "the process may use; 0: one per CPU but one, which the thread that compresses the output "
+			  "rawlog takes; the results are the same on any number) (default 0)",
 			  false, 0, "N", cmd)
 	{
 	}
 
-	/** Sizes OpenCV's pool (0 leaves its default); a negative count is a
-	 * bad input. No more threads than the CPUs this process may run on
-	 * (its affinity and cgroup, as OpenCV counts them): more would only
-	 * take turns, and TBB, refusing the extra workers, prints a warning of
-	 * its own on stderr. */
+	/** Sizes OpenCV's pool; a negative count is a bad input. No more
+	 * threads than the CPUs this process may run on (its affinity and
+	 * cgroup, as OpenCV counts them): more would only take turns, and TBB,
+	 * refusing the extra workers, prints a warning of its own on stderr.
+	 * By default one CPU is left to the rawlog writer's compressing thread
+	 * (GzWriterThread.h), the slowest part of a long run: on two cores,
+	 * fusing on both made the fusion's frames 50 % slower for the same
+	 * wall time. */
 	void apply()
 	{
 		if (m_arg.getValue() < 0) throw InputError("--threads", "", "must be >= 0");
 		m_asked = m_arg.getValue();
-		if (m_asked > 0) cv::setNumThreads(std::min(m_asked, std::max(1, cv::getNumberOfCPUs())));
+		const int cpus = std::max(1, cv::getNumberOfCPUs());
+		cv::setNumThreads(m_asked > 0 ? std::min(m_asked, cpus) : std::max(1, cpus - 1));
 	}
 
-	/** "1 thread", "2 threads": the pool as it is now; with fewer than
-	 * asked for, why ("1 thread of 2 asked: 1 CPU available"). */
+	/** "1 thread", "2 threads": the pool as it is now; by default, that a
+	 * CPU was left for writing; with fewer than asked for, why ("1 thread
+	 * of 2 asked: 1 CPU available"). */
 	std::string describe() const
 	{
 		const int n = cv::getNumThreads();
 		std::string text = std::to_string(n) + (n == 1 ? " thread" : " threads");
+		if (m_asked == 0 && cv::getNumberOfCPUs() > 1) text += "; another compresses the output";
 		if (m_asked > n)
 		{
 			const int cpus = cv::getNumberOfCPUs();
