@@ -16,12 +16,27 @@ namespace lvf::common
 class ThreadsOption
 {
    public:
-	explicit ThreadsOption(TCLAP::CmdLine& cmd)
+	/** What a count of 0 (the default) means. */
+	enum class ByDefault
+	{
+		EveryCpu,  //!< one thread per CPU
+		/** one per CPU but one, for a program whose output rawlog's
+		 * compressing thread (GzWriterThread.h) is the slowest part of its
+		 * run (lvf-fuse): on two cores, fusing on both beside it made the
+		 * fusion's frames 50 % slower for the same wall time. */
+		LeaveOneForWriting
+	};
+
+	explicit ThreadsOption(TCLAP::CmdLine& cmd, ByDefault byDefault = ByDefault::EveryCpu)
 		: m_arg("", "threads",
 			  "Threads for the fusion's model check and depth search (OpenCV's pool, at most one per CPU "
-			  "the process may use; 0: one per CPU but one, which the thread that compresses the output "
-			  "rawlog takes; the results are the same on any number) (default 0)",
-			  false, 0, "N", cmd)
+			  "the process may use; 0: " +
+				  std::string(byDefault == ByDefault::EveryCpu
+						  ? "one per CPU"
+						  : "one per CPU but one, which the thread that compresses the output rawlog takes") +
+				  "; the results are the same on any number) (default 0)",
+			  false, 0, "N", cmd),
+		  m_leaveOne(byDefault == ByDefault::LeaveOneForWriting)
 	{
 	}
 
@@ -29,16 +44,15 @@ class ThreadsOption
 	 * threads than the CPUs this process may run on (its affinity and
 	 * cgroup, as OpenCV counts them): more would only take turns, and TBB,
 	 * refusing the extra workers, prints a warning of its own on stderr.
-	 * By default one CPU is left to the rawlog writer's compressing thread
-	 * (GzWriterThread.h), the slowest part of a long run: on two cores,
-	 * fusing on both made the fusion's frames 50 % slower for the same
-	 * wall time. */
+	 * 0: as the constructor was told (ByDefault); every CPU is OpenCV's
+	 * own default. */
 	void apply()
 	{
 		if (m_arg.getValue() < 0) throw InputError("--threads", "", "must be >= 0");
 		m_asked = m_arg.getValue();
 		const int cpus = std::max(1, cv::getNumberOfCPUs());
-		cv::setNumThreads(m_asked > 0 ? std::min(m_asked, cpus) : std::max(1, cpus - 1));
+		if (m_asked > 0) cv::setNumThreads(std::min(m_asked, cpus));
+		else if (m_leaveOne) cv::setNumThreads(std::max(1, cpus - 1));
 	}
 
 	/** "1 thread", "2 threads": the pool as it is now; by default, that a
@@ -48,7 +62,7 @@ class ThreadsOption
 	{
 		const int n = cv::getNumThreads();
 		std::string text = std::to_string(n) + (n == 1 ? " thread" : " threads");
-		if (m_asked == 0 && cv::getNumberOfCPUs() > 1) text += "; another compresses the output";
+		if (m_asked == 0 && m_leaveOne && cv::getNumberOfCPUs() > 1) text += "; another compresses the output";
 		if (m_asked > n)
 		{
 			const int cpus = cv::getNumberOfCPUs();
@@ -60,6 +74,7 @@ class ThreadsOption
 
    private:
 	TCLAP::ValueArg<int> m_arg;
+	bool m_leaveOne;
 	int m_asked = 0;
 };
 
