@@ -75,7 +75,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	TCLAP::ValueArg<int> argEvalEvery("", "eval-every", "Add the evaluation picture (EVAL) of every N-th frame to the output rawlog; 0: none (default 1: every frame; a picture is about the size of a stereo pair)", false, 1, "N", cmd);
 	TCLAP::SwitchArg argPoints("", "points", "Also write NAME_points.csv: every visual point of every frame (pixel, disparity, NCC, robot-frame position, bearing and range from the laser, found by the search, grown or remembered); thousands of rows a frame", cmd);
 	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m], 0.005 to 5 (default 0.05)", false, 0.05, "M", cmd);
-	lvf::common::ThreadsOption threads(cmd, lvf::common::ThreadsOption::ByDefault::LeaveOneForWriting);
+	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
 	TCLAP::SwitchArg argVerbose("v", "verbose", "Also print each frame's figures (segments, pixels, points, bearings, time) as it is fused", cmd);
