@@ -1,6 +1,7 @@
 // Rawlogs written by the simulator read back through MRPT unchanged, in both
-// layouts; a seed fixes every bit of the output; a file that cannot be
-// written is reported.
+// layouts -- written as several gzip members (GzWriterThread.h), which
+// MRPT reads as one stream; a seed fixes every bit of the output; a file
+// that cannot be written is reported.
 
 #include "TestWorlds.h"
 
@@ -13,13 +14,46 @@
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/system/filesystem.h>
 
+#include <zlib.h>
+
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace lvf::simulation;
 using lvf::common::RawlogFormat;
 
 namespace
 {
+/** The gzip members the file at `path` holds, one after another. */
+int gzipMembers(const std::string& path)
+{
+	std::ifstream in(path, std::ios::binary);
+	std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), {});
+	std::vector<unsigned char> out(1 << 16);
+	int members = 0;
+	size_t at = 0;
+	while (at < bytes.size())
+	{
+		z_stream z{};
+		if (inflateInit2(&z, 16 + MAX_WBITS) != Z_OK) return -1;
+		z.next_in = bytes.data() + at;
+		z.avail_in = static_cast<uInt>(bytes.size() - at);
+		int result;
+		do
+		{
+			z.next_out = out.data();
+			z.avail_out = static_cast<uInt>(out.size());
+			result = inflate(&z, Z_NO_FLUSH);
+		} while (result == Z_OK);
+		at += z.total_in;
+		inflateEnd(&z);
+		if (result != Z_STREAM_END) return -1;
+		members++;
+	}
+	return members;
+}
+
 std::vector<CStereoLaserSimulator::Frame> simulate(uint32_t seed, size_t frames)
 {
 	World world = loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
@@ -86,6 +120,7 @@ TEST_P(RawlogRoundTrip, ObservationsReadBackUnchanged)
 		for (const auto& f : frames)
 			writer.append({f.timestamp, f.odometry, {f.scan, f.stereo}});
 	}
+	EXPECT_GE(gzipMembers(path), 2) << "three frames of 0.6 MB: more than a member's megabyte";
 	mrpt::obs::CRawlog log;
 	ASSERT_TRUE(log.loadFromRawLogFile(path));
 	std::filesystem::remove(path);
