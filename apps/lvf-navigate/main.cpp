@@ -238,7 +238,7 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<double> argTimeout("", "timeout", "Simulated seconds before giving up (default: [NavigationLoop] timeout)", false, 0, "S", cmd);
 	TCLAP::ValueArg<int> argBatch("b", "batch", "Run N random rooms per room kind", false, 0, "N", cmd);
 	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out", "DIR", cmd);
-	lvf::common::ThreadsOption threads(cmd);
+	lvf::common::ThreadsOption threads(cmd, "the simulator's two cameras and the fusion's model check and depth search");
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print only the metrics line (or table) and errors", cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration ([NavigationLoop], every MRPT navigator section and key, the simulator's and the fusion's sections; defaults overridden by --config, --sensors-config, --fusion-config, --method) and exit; it reads back as --config", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;

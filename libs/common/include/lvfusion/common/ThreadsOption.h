@@ -16,11 +16,12 @@ namespace lvf::common
 class ThreadsOption
 {
    public:
-	explicit ThreadsOption(TCLAP::CmdLine& cmd)
+	/** `work`: what the program runs on the pool, for --help. */
+	explicit ThreadsOption(TCLAP::CmdLine& cmd, const std::string& work = "the fusion's model check and depth search")
 		: m_arg("", "threads",
-			  "Threads for the fusion's model check and depth search (OpenCV's pool, at most one per CPU "
-			  "the process may use; 0: OpenCV's own count, one per core; the results are the same on any "
-			  "number) (default 0)",
+			  "Threads for " + work +
+				  " (OpenCV's pool, at most one per CPU the process may use; 0: OpenCV's own count, one per "
+				  "core; the results are the same on any number) (default 0)",
 			  false, 0, "N", cmd)
 	{
 	}
