@@ -1,7 +1,5 @@
 #include "GzWriterThread.h"
 
-#include <lvfusion/common/InputError.h>
-
 #include <libdeflate.h>
 
 #include <stdexcept>
@@ -17,8 +15,7 @@ constexpr size_t kMemberBytes = size_t{1} << 20;
 void GzWriterThread::FreeCompressor::operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
 
 GzWriterThread::GzWriterThread(const std::string& path, int level, size_t maxQueuedBytes)
-	: m_path(path),
-	  m_maxQueuedBytes(maxQueuedBytes),
+	: m_maxQueuedBytes(maxQueuedBytes),
 	  m_file(path, std::ios::binary),
 	  m_compressor(libdeflate_alloc_compressor(level))
 {
@@ -65,7 +62,7 @@ void GzWriterThread::writeMember(const std::vector<uint8_t>& bytes)
 	// (The bound holds by libdeflate's contract; 0 would mean it did not.)
 	if (size == 0) throw std::logic_error("libdeflate: a gzip member larger than its bound");
 	m_file.write(reinterpret_cast<const char*>(m_compressed.data()), static_cast<std::streamsize>(size));
-	requireWritten(!m_file.fail(), m_path);
+	requireWritten(!m_file.fail(), m_file.path());
 }
 
 void GzWriterThread::run()

@@ -66,7 +66,6 @@ class GzWriterThread
 		void operator()(libdeflate_compressor* c) const;
 	};
 
-	const std::string m_path;
 	const size_t m_maxQueuedBytes;
 	OutputFile m_file;
 	std::unique_ptr<libdeflate_compressor, FreeCompressor> m_compressor;

@@ -34,6 +34,8 @@ class OutputFile : public std::ofstream
 	/** Closes, and InputError naming the file if any of it could not be
 	 * written. (It hides std::ofstream::close: call it on an OutputFile.) */
 	void close();
+	/** The path it was opened with. */
+	const std::string& path() const { return m_path; }
 
    private:
 	std::string m_path;
