@@ -8,7 +8,6 @@
 
 #include <gtest/gtest.h>
 #include <lvfusion/common/GridOutputs.h>
-#include <lvfusion/common/GzOutputFile.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/StagedOutputFiles.h>
@@ -102,7 +101,7 @@ TEST_F(WrittenFiles, TextAndPicturesThatDoNotReachTheDiskAreErrors)
 	expectErrorNaming(png, [&] { lvf::common::writeImage(png, cv::Mat1b(8, 8, uint8_t(100))); });
 }
 
-TEST(GzOutputFile, WritesWhatMrptsGzipStreamReads)
+TEST(SavedGrid, IsWhatMrptsGzipStreamReads)
 {
 	// The same archive, read back by MRPT's own reader.
 	const std::string path = testing::TempDir() + "/written_files_" + std::to_string(::getpid()) + ".gz";

@@ -1,5 +1,6 @@
+#include "GzipMemberFile.h"
+
 #include <lvfusion/common/GridOutputs.h>
-#include <lvfusion/common/GzOutputFile.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -8,8 +9,9 @@ namespace lvf::common
 {
 void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath)
 {
-	GzOutputFile out(gridmapPath);
-	out.writeObject(grid);
+	// Level 1, as the rawlogs: a grid's cells compress well at any level.
+	GzipMemberFile out(gridmapPath, 1);
+	out.writeMember(archived(grid));
 	out.close();
 }
 

@@ -1,9 +1,5 @@
 #include "GzWriterThread.h"
 
-#include <libdeflate.h>
-
-#include <stdexcept>
-
 namespace lvf::common
 {
 namespace
@@ -12,18 +8,13 @@ namespace
 constexpr size_t kMemberBytes = size_t{1} << 20;
 }  // namespace
 
-void GzWriterThread::FreeCompressor::operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
-
 GzWriterThread::GzWriterThread(const std::string& path, int level, size_t maxQueuedBytes)
-	: m_maxQueuedBytes(maxQueuedBytes),
-	  m_file(path, std::ios::binary),
-	  m_compressor(libdeflate_alloc_compressor(level))
+	: m_maxQueuedBytes(maxQueuedBytes), m_file(path, level)
 {
-	if (!m_compressor) throw std::invalid_argument("GzWriterThread: compression level " + std::to_string(level));
 	m_thread = std::thread([this] { run(); });
 }
 
-GzWriterThread::~GzWriterThread() { finish(); }	// ~OutputFile closes silently
+GzWriterThread::~GzWriterThread() { finish(); }	// ~GzipMemberFile closes silently
 
 void GzWriterThread::write(std::vector<uint8_t> bytes)
 {
@@ -54,17 +45,6 @@ void GzWriterThread::finish()
 	if (m_thread.joinable()) m_thread.join();
 }
 
-void GzWriterThread::writeMember(const std::vector<uint8_t>& bytes)
-{
-	m_compressed.resize(libdeflate_gzip_compress_bound(m_compressor.get(), bytes.size()));
-	const size_t size =
-		libdeflate_gzip_compress(m_compressor.get(), bytes.data(), bytes.size(), m_compressed.data(), m_compressed.size());
-	// (The bound holds by libdeflate's contract; 0 would mean it did not.)
-	if (size == 0) throw std::logic_error("libdeflate: a gzip member larger than its bound");
-	m_file.write(reinterpret_cast<const char*>(m_compressed.data()), static_cast<std::streamsize>(size));
-	requireWritten(!m_file.fail(), m_file.path());
-}
-
 void GzWriterThread::run()
 {
 	std::vector<uint8_t> member;  // entries gathered towards kMemberBytes
@@ -91,7 +71,7 @@ void GzWriterThread::run()
 			else member.insert(member.end(), bytes.begin(), bytes.end());
 			if (!member.empty() && (member.size() >= kMemberBytes || last))
 			{
-				writeMember(member);
+				m_file.writeMember(member);
 				member.clear();
 			}
 		}

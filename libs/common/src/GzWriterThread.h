@@ -5,32 +5,24 @@
 // them raw) and adds a colour picture a frame; compressing that took over
 // half of a long run's time on the caller's thread.
 //
-// Compressed with libdeflate: entries are gathered until they reach a
-// megabyte, and compressed as one gzip member. gzip allows a file of
-// several members, and zlib's gzread (MRPT's CFileGZInputStream, so every
-// MRPT tool), zcat and Python read them as one stream. libdeflate is a
-// whole-buffer compressor, 2.7 times as fast as zlib's stream at level 1
-// on a rawlog of images, to the same size (measurements.md, session 46);
-// a megabyte is a member large enough that starting each one afresh costs
-// nothing measurable (+0.2 % in size).
+// Entries are gathered until they reach a megabyte and written as one gzip
+// member (GzipMemberFile.h): a member large enough that starting each one
+// afresh costs nothing measurable (+0.2 % in size).
 //
 // The bytes reach the file in the order they were handed over. A write that
 // fails (a full disk) is reported by the next write() or by close() as the
 // one InputError line that names the file.
 
-#include <lvfusion/common/WrittenFiles.h>
+#include "GzipMemberFile.h"
 
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <exception>
-#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
-
-struct libdeflate_compressor;
 
 namespace lvf::common
 {
@@ -58,18 +50,8 @@ class GzWriterThread
 	void run();
 	/** Lets the thread write what is queued, and waits for it. */
 	void finish();
-	/** Compresses `bytes` as one gzip member and writes it (the thread). */
-	void writeMember(const std::vector<uint8_t>& bytes);
-
-	struct FreeCompressor
-	{
-		void operator()(libdeflate_compressor* c) const;
-	};
-
 	const size_t m_maxQueuedBytes;
-	OutputFile m_file;
-	std::unique_ptr<libdeflate_compressor, FreeCompressor> m_compressor;
-	std::vector<uint8_t> m_compressed;	//!< the thread's: a member, compressed
+	GzipMemberFile m_file;	//!< the thread's, once it runs
 	std::mutex m_mutex;
 	std::condition_variable m_changed;
 	std::deque<std::vector<uint8_t>> m_queue;

@@ -5,8 +5,6 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
-#include <mrpt/serialization/CArchive.h>
-#include <mrpt/serialization/archiveFrom_std_vector.h>
 
 namespace lvf::common
 {
@@ -32,11 +30,8 @@ RawlogWriter::~RawlogWriter() = default;
 
 void RawlogWriter::write(const mrpt::serialization::CSerializable& object)
 {
-	// The bytes MRPT's archive would write to the file, handed over whole.
-	std::vector<uint8_t> bytes;
-	auto archive = mrpt::serialization::archiveFrom(bytes);
-	archive << object;
-	m_out->write(std::move(bytes));
+	// Serialized here, on the caller's thread, and handed over whole.
+	m_out->write(archived(object));
 }
 
 void RawlogWriter::append(const RawlogFrame& frame)

@@ -29,7 +29,7 @@ class OutputFile : public std::ofstream
 	explicit OutputFile(const std::string& path, std::ios::openmode mode = std::ios::out) { open(path, mode); }
 
 	/** Opens `path`; InputError naming it if it cannot be opened for
-	 * writing (as GzOutputFile's). */
+	 * writing. */
 	void open(const std::string& path, std::ios::openmode mode = std::ios::out);
 	/** Closes, and InputError naming the file if any of it could not be
 	 * written. (It hides std::ofstream::close: call it on an OutputFile.) */
