@@ -178,13 +178,15 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		f.stereo->timestamp = mrpt::Clock::fromDouble(mrpt::Clock::toDouble(f.stereo->timestamp) + 5.0);
 	});
 	const auto badKey = write("key.ini", "[FocusedEpipolarSearch]\nz_mx = 4\n");
+	const auto misplacedKey = write("place.ini", "[CLaserStereoFusion]\nz_max = 4\n");
 	const auto badValue = write("value.ini", "[ModelEvaluator]\nwindow_size = 8\n");
 	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog";
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input /nonexistent.rawlog", "/nonexistent.rawlog: input rawlog not found"},
 		{"--input " + notRawlog.string(), "notes.rawlog: record 0: not an MRPT object: corrupt, truncated or not a rawlog"},
 		{"--input " + laserOnly.string(), "laser_only.rawlog: no laser scan has a stereo pair within 0.050 s (2 scans, 2 stereo pairs)"},
-		{"--input " + sample + " --config " + badKey.string(), "key.ini: [FocusedEpipolarSearch] z_mx: unknown key"},
+		{"--input " + sample + " --config " + badKey.string(), "key.ini: [FocusedEpipolarSearch] z_mx: unknown key (did you mean 'z_max'?)"},
+		{"--input " + sample + " --config " + misplacedKey.string(), "place.ini: [CLaserStereoFusion] z_max: unknown key (it belongs in [FocusedEpipolarSearch])"},
 		{"--input " + sample + " --config " + badValue.string(), "value.ini: [ModelEvaluator] window_size: must be odd"},
 		{"--input " + sample + " --max-time-diff -1", "--max-time-diff: must be >= 0"},
 		{"--input " + sample + " --threads -2", "--threads: must be >= 0"},

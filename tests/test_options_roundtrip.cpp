@@ -59,19 +59,47 @@ TEST(Options, FusionRoundTrips)
 	expectRoundTrip(o, "CLaserStereoFusion");
 }
 
-TEST(Options, UnknownKeyIsRefusedWithItsName)
+namespace
 {
-	mrpt::config::CConfigFileMemory cfg("[CLaserStereoFusion]\nrobot_hieght = 1.0\n");
+/** The error loading `ini` into the fusion's options gives ("" if none). */
+std::string fusionOptionsError(const std::string& ini)
+{
+	mrpt::config::CConfigFileMemory cfg(ini);
 	lvf::fusion::CLaserStereoFusion::TOptions o;
 	try
 	{
 		o.loadFromConfigFile(cfg, "CLaserStereoFusion");
-		FAIL() << "no error";
 	}
 	catch (const lvf::common::InputError& e)
 	{
-		EXPECT_STREQ(e.what(), "<memory>: [CLaserStereoFusion] robot_hieght: unknown key");
+		return e.what();
 	}
+	return "";
+}
+}  // namespace
+
+TEST(Options, UnknownKeyIsRefusedWithItsNameAndTheKeyLikelyMeant)
+{
+	EXPECT_EQ(fusionOptionsError("[CLaserStereoFusion]\nrobot_hieght = 1.0\n"),
+		"<memory>: [CLaserStereoFusion] robot_hieght: unknown key (did you mean 'robot_height'?)");
+	EXPECT_EQ(fusionOptionsError("[FocusedEpipolarSearch]\nz_mx = 4\n"),
+		"<memory>: [FocusedEpipolarSearch] z_mx: unknown key (did you mean 'z_max'?)");
+	// Nothing near: no guess.
+	EXPECT_EQ(fusionOptionsError("[ScanFusion]\ncolour = 1\n"), "<memory>: [ScanFusion] colour: unknown key");
+}
+
+TEST(Options, AKeyInTheWrongSectionIsRefusedWithWhereItBelongs)
+{
+	EXPECT_EQ(fusionOptionsError("[CLaserStereoFusion]\nz_max = 4\n"),
+		"<memory>: [CLaserStereoFusion] z_max: unknown key (it belongs in [FocusedEpipolarSearch])");
+	EXPECT_EQ(fusionOptionsError("[ScanFusion]\nwindow_size = 9\n"),
+		"<memory>: [ScanFusion] window_size: unknown key (it belongs in [ModelEvaluator])");
+}
+
+TEST(Options, AMisspeltSectionIsRefusedWithTheSectionLikelyMeant)
+{
+	EXPECT_EQ(fusionOptionsError("[FocusedEpipolarSerch]\nz_max = 4\n"),
+		"<memory>: [FocusedEpipolarSerch]: unknown section (did you mean 'FocusedEpipolarSearch'?)");
 }
 
 // Found by tests/fuzz/fuzz_ini_options: MRPT's own INI preprocessor refuses

@@ -3,6 +3,7 @@
 
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/LikelyMeant.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/system/filesystem.h>
@@ -138,13 +139,14 @@ void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CC
 		const std::string section = mrpt::system::trim(rawSection);
 		if (section.empty() || section == kPlannerSection || section == kGlobalMapsSection) continue;
 		if (std::find(known.begin(), known.end(), section) == known.end())
-			throw InputError(source, "[" + section + "]", "unknown section");
+			throw InputError(source, "[" + section + "]", "unknown section" + lvf::common::didYouMean(section, known));
 		const auto defaults = keysOf(merged, section);
 		for (const auto& key : keysOf(user, section))
 		{
 			const bool ignored = section == kExperiment && kIgnoredExperimentKeys.count(key);
 			if (!ignored && std::find(defaults.begin(), defaults.end(), key) == defaults.end())
-				throw InputError(source, "[" + section + "] " + key, "unknown key");
+				throw InputError(
+					source, "[" + section + "] " + key, "unknown key" + lvf::common::didYouMean(key, defaults));
 			// Only changed values are rewritten: the others keep their comments.
 			const std::string value = user.read_string(section, key, "");
 			if (value != merged.read_string(section, key, "")) merged.write(section, key, value);

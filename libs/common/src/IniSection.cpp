@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/LikelyMeant.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>
 
@@ -10,6 +11,24 @@
 
 namespace lvf::common
 {
+namespace
+{
+/** A key as MRPT's parser stores it may keep the blanks before its '='. */
+std::string keyName(std::string stored)
+{
+	stored.erase(stored.find_last_not_of(" \t") + 1);
+	return stored;
+}
+
+std::vector<std::string> keyNames(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	std::vector<std::string> keys;
+	cfg.getAllKeys(section, keys);
+	for (auto& k : keys) k = keyName(k);
+	return keys;
+}
+}  // namespace
+
 std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 {
 	if (const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg))
@@ -65,12 +84,7 @@ IniSection::IniSection(
 	// in-memory configs keep it); look them up by their trimmed names.
 	std::vector<std::string> keys;
 	m_cfg.getAllKeys(m_section, keys);
-	for (const auto& stored : keys)
-	{
-		std::string name = stored;
-		name.erase(name.find_last_not_of(" \t") + 1);
-		m_storedKeys[name] = stored;
-	}
+	for (const auto& stored : keys) m_storedKeys[keyName(stored)] = stored;
 }
 
 bool IniSection::has(const std::string& key)
@@ -174,8 +188,30 @@ std::vector<double> IniSection::reals(
 
 void IniSection::rejectUnknownKeys() const
 {
+	const std::vector<std::string> known(m_readKeys.begin(), m_readKeys.end());
 	for (const auto& [name, stored] : m_storedKeys)
-		if (!m_readKeys.count(name)) fail(name, "unknown key");
+		if (!m_readKeys.count(name)) fail(name, "unknown key" + didYouMean(name, known));
+}
+
+void rejectKeysOfOtherSections(const mrpt::config::CConfigFileBase& cfg, const mrpt::config::CConfigFileBase& defaults)
+{
+	std::vector<std::string> sections;
+	defaults.getAllSections(sections);
+	for (const auto& section : sections)
+	{
+		const auto own = keyNames(defaults, section);
+		for (const auto& key : keyNames(cfg, section))
+		{
+			if (std::find(own.begin(), own.end(), key) != own.end()) continue;
+			for (const auto& other : sections)
+			{
+				const auto theirs = keyNames(defaults, other);
+				if (std::find(theirs.begin(), theirs.end(), key) != theirs.end())
+					throw InputError(configSourceName(cfg), "[" + section + "] " + key,
+						"unknown key (it belongs in [" + other + "])");
+			}
+		}
+	}
 }
 
 void rejectUnknownSections(
@@ -188,7 +224,7 @@ void rejectUnknownSections(
 		if (!s.empty() &&
 			std::find(known.begin(), known.end(), s) == known.end())
 			throw InputError(
-				configSourceName(cfg), "[" + s + "]", "unknown section");
+				configSourceName(cfg), "[" + s + "]", "unknown section" + didYouMean(s, known));
 }
 
 }  // namespace lvf::common

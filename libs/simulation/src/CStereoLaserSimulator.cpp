@@ -1,4 +1,5 @@
 #include <lvfusion/common/IniSection.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/GroundTruth.h>
@@ -21,6 +22,10 @@ void CStereoLaserSimulator::TOptions::loadFromConfigFile(
 {
 	lvf::common::rejectUnknownSections(
 		source, {section, kLaserSection, kStereoSection, kOdometrySection});
+	// Every key in its section, to say where a key put in the wrong one belongs.
+	mrpt::config::CConfigFileMemory defaults;
+	TOptions().saveToConfigFile(defaults, section);
+	lvf::common::rejectKeysOfOtherSections(source, defaults);
 	lvf::common::IniSection ini(source, section);
 	seed = static_cast<uint32_t>(ini.integer("seed", int(seed), 0));
 	framePeriod = ini.real("frame_period", framePeriod, 1e-3, 3600);

@@ -1,4 +1,5 @@
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/LikelyMeant.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
@@ -65,7 +66,7 @@ class Field
 			if (std::find(allowedKeys.begin(), allowedKeys.end(), key) ==
 				allowedKeys.end())
 				Field(kv.first, m_path.empty() ? key : m_path + "." + key, m_source)
-					.fail("unknown key '" + key + "'");
+					.fail("unknown key '" + key + "'" + lvf::common::didYouMean(key, allowedKeys));
 		}
 	}
 	size_t sequenceSize() const

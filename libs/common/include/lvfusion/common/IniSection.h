@@ -59,7 +59,16 @@ class IniSection
 	std::map<std::string, std::string> m_storedKeys;  // trimmed name -> key as stored
 };
 
-/** Throws InputError naming the first section of `cfg` not in `known`. */
+/** For options spread over several sections (`defaults`: every key in its
+ * section, as saveToConfigFile writes them): throws InputError naming the
+ * first key of `cfg` that is not in its own section but in another, and
+ * where it belongs -- the likeliest slip after a typo. Keys in no section
+ * are left to IniSection::rejectUnknownKeys. */
+void rejectKeysOfOtherSections(
+	const mrpt::config::CConfigFileBase& cfg, const mrpt::config::CConfigFileBase& defaults);
+
+/** Throws InputError naming the first section of `cfg` not in `known`
+ * (and the one likely meant). */
 void rejectUnknownSections(
 	const mrpt::config::CConfigFileBase& cfg,
 	const std::vector<std::string>& known);
