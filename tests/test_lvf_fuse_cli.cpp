@@ -456,8 +456,13 @@ TEST_F(LvfFuseCli, ALongLogFusesInTheMemoryOfAFewFrames)
 	// after it), the scan kept for its frame alone until the pair comes.
 	EXPECT_NE(longRun.out.find("(1 of 120 rawlog entries held at once)"), std::string::npos) << longRun.out;
 	EXPECT_EQ(labelCounts(run(LVF_RAWLOG_EDIT, "--info -i long/long_fused.rawlog").out).at("FUSED"), 40);
-	// Holding them all, the 36 frames more cost about 1.5 MB each (the
-	// pair, and the evaluation picture added to the output).
+	// Holding them all, the 36 frames more would cost about 1.5 MB each
+	// (the pair, and the evaluation picture added to the output): 54 MB.
+	// What the run may hold besides does not grow with the log: the
+	// compressing thread's queue (4 MB, full when the thread lags behind,
+	// GzWriterThread.h), the member it gathers and that member compressed
+	// (a megabyte and an entry, about 2.5 MB each): up to about 10 MB, the
+	// whole of the margin allowed here before. Hence 20 MB.
 	auto peakMB = [](const std::string& summary) {
 		const auto at = summary.find(" MB of memory at most");
 		const auto from = summary.rfind(' ', at - 1) + 1;
@@ -466,5 +471,5 @@ TEST_F(LvfFuseCli, ALongLogFusesInTheMemoryOfAFewFrames)
 #if defined(__SANITIZE_ADDRESS__)
 	GTEST_SKIP() << "AddressSanitizer holds freed memory back (its quarantine): memory not compared";
 #endif
-	EXPECT_LT(peakMB(longRun.out) - peakMB(shortRun.out), 10.0) << shortRun.out << longRun.out;
+	EXPECT_LT(peakMB(longRun.out) - peakMB(shortRun.out), 20.0) << shortRun.out << longRun.out;
 }
