@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config file
   libmrpt-dev mrpt-apps mrpt-common
-  libopencv-dev libeigen3-dev libyaml-cpp-dev zlib1g-dev libdeflate-dev
+  libopencv-dev libeigen3-dev libyaml-cpp-dev zlib1g-dev libisal-dev
   libgtest-dev libbenchmark-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -9,8 +9,8 @@ namespace lvf::common
 {
 void saveGrid(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& gridmapPath)
 {
-	// Level 1, as the rawlogs: a grid's cells compress well at any level.
-	GzipMemberFile out(gridmapPath, 1);
+	// Level 2, as the rawlogs (RawlogWriter.cpp).
+	GzipMemberFile out(gridmapPath, 2);
 	out.writeMember(archived(grid));
 	out.close();
 }

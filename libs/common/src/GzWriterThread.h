@@ -29,7 +29,7 @@ namespace lvf::common
 class GzWriterThread
 {
    public:
-	/** Opens `path` for `level` (1 fastest .. 12 smallest; InputError if it
+	/** Opens `path` for igzip's `level` (0 fastest .. 3 smallest; InputError if it
 	 * cannot be opened); at most `maxQueuedBytes` wait for the thread at
 	 * once (a larger entry goes alone): a few frames, so that a slow disk
 	 * holds the caller back rather than memory filling up. */

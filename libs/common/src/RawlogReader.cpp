@@ -1,6 +1,7 @@
+#include "GzipInputFile.h"
+
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogReader.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
@@ -9,8 +10,8 @@ namespace lvf::common
 RawlogReader::RawlogReader(const std::string& path) : m_path(path)
 {
 	requireRegularInputFile(path, "input rawlog");
-	m_file = std::make_unique<mrpt::io::CFileGZInputStream>(path);
-	m_archive = std::make_unique<mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream>>(*m_file);
+	m_file = std::make_unique<GzipInputFile>(path);
+	m_archive = std::make_unique<mrpt::serialization::CArchiveStreamBase<GzipInputFile>>(*m_file);
 }
 
 RawlogReader::~RawlogReader() = default;

@@ -8,10 +8,6 @@
 #include <memory>
 #include <string>
 
-namespace mrpt::io
-{
-class CFileGZInputStream;
-}
 namespace mrpt::serialization
 {
 class CArchive;
@@ -19,6 +15,8 @@ class CArchive;
 
 namespace lvf::common
 {
+class GzipInputFile;
+
 /** The file's objects one at a time (observations, or actions and sensory
  * frames), for logs too long to hold: a real robot's, with its images. */
 class RawlogReader
@@ -40,7 +38,7 @@ class RawlogReader
 
    private:
 	std::string m_path;
-	std::unique_ptr<mrpt::io::CFileGZInputStream> m_file;
+	std::unique_ptr<GzipInputFile> m_file;  //!< GzipInputFile.h: as MRPT reads a rawlog, faster
 	std::unique_ptr<mrpt::serialization::CArchive> m_archive;
 	size_t m_count = 0;
 };

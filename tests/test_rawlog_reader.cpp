@@ -1,0 +1,177 @@
+// RawlogReader reads what MRPT's own reader reads, object for object and
+// byte for byte -- a rawlog as MRPT writes it (one zlib stream), as
+// lvfusion writes it (several gzip members), not compressed, or with bytes
+// after its last member -- though it inflates with igzip (GzipInputFile.h);
+// and a rawlog cut short or corrupted is one InputError naming the record.
+
+#include "TestWorlds.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <lvfusion/common/InputError.h>
+#include <lvfusion/common/RawlogReader.h>
+#include <lvfusion/common/RawlogWriter.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/archiveFrom_std_vector.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using namespace lvf::simulation;
+namespace fs = std::filesystem;
+
+namespace
+{
+using Bytes = std::vector<uint8_t>;
+
+Bytes serialized(const mrpt::serialization::CSerializable& object)
+{
+	Bytes bytes;
+	auto archive = mrpt::serialization::archiveFrom(bytes);
+	archive << object;
+	return bytes;
+}
+
+/** Every object of the file as RawlogReader reads it, serialized again. */
+std::vector<Bytes> readByLvfusion(const std::string& path)
+{
+	std::vector<Bytes> out;
+	lvf::common::RawlogReader reader(path);
+	while (auto object = reader.next()) out.push_back(serialized(*object));
+	return out;
+}
+
+/** The same, as MRPT's own gzip reader reads them. */
+std::vector<Bytes> readByMrpt(const std::string& path)
+{
+	std::vector<Bytes> out;
+	mrpt::io::CFileGZInputStream in(path);
+	auto archive = mrpt::serialization::archiveFrom(in);
+	try
+	{
+		for (;;) out.push_back(serialized(*archive.ReadObject()));
+	}
+	catch (const mrpt::serialization::CExceptionEOF&)
+	{
+	}
+	return out;
+}
+
+Bytes fileBytes(const std::string& path)
+{
+	std::ifstream in(path, std::ios::binary);
+	return Bytes((std::istreambuf_iterator<char>(in)), {});
+}
+
+void writeBytes(const std::string& path, const Bytes& bytes)
+{
+	std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+class RawlogReaderFiles : public ::testing::Test
+{
+   protected:
+	void SetUp() override
+	{
+		m_dir = fs::temp_directory_path() / ("lvf_rawlog_reader_" + std::to_string(::getpid()));
+		fs::create_directories(m_dir);
+		World world = loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/box_room.yaml");
+		world.path.resize(3);
+		CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
+		for (int k = 0; k < 3; k++)
+		{
+			const auto f = sim.simulateNextFrame(false);
+			m_objects.push_back(f.scan);
+			m_objects.push_back(f.stereo);
+		}
+	}
+	void TearDown() override { fs::remove_all(m_dir); }
+
+	std::string path(const std::string& name) const { return (m_dir / name).string(); }
+	/** The objects, each as MRPT's archive writes it. */
+	std::vector<Bytes> expected() const
+	{
+		std::vector<Bytes> out;
+		for (const auto& o : m_objects) out.push_back(serialized(*o));
+		return out;
+	}
+	/** The objects written by lvfusion's writer (gzip members). */
+	std::string writtenByLvfusion(const std::string& name) const
+	{
+		lvf::common::RawlogWriter writer(path(name), lvf::common::RawlogFormat::Observations);
+		for (const auto& o : m_objects) writer.appendEntry(*o);
+		writer.close();
+		return path(name);
+	}
+
+	fs::path m_dir;
+	std::vector<mrpt::serialization::CSerializable::Ptr> m_objects;
+};
+}  // namespace
+
+TEST_F(RawlogReaderFiles, ReadsALogAsMrptWritesIt)
+{
+	const std::string file = path("mrpt.rawlog");
+	{
+		mrpt::io::CFileGZOutputStream out(file);  // zlib: one gzip stream
+		auto archive = mrpt::serialization::archiveFrom(out);
+		for (const auto& o : m_objects) archive << *o;
+	}
+	EXPECT_EQ(readByLvfusion(file), expected());
+	EXPECT_EQ(readByMrpt(file), expected());
+}
+
+TEST_F(RawlogReaderFiles, ReadsALogAsLvfusionWritesIt)
+{
+	const std::string file = writtenByLvfusion("members.rawlog");
+	EXPECT_EQ(readByLvfusion(file), expected());
+	EXPECT_EQ(readByMrpt(file), expected());
+}
+
+TEST_F(RawlogReaderFiles, ReadsALogNotCompressed)
+{
+	const std::string file = path("plain.rawlog");
+	{
+		mrpt::io::CFileOutputStream out(file);
+		auto archive = mrpt::serialization::archiveFrom(out);
+		for (const auto& o : m_objects) archive << *o;
+	}
+	EXPECT_EQ(readByLvfusion(file), expected());
+	EXPECT_EQ(readByMrpt(file), expected());
+}
+
+TEST_F(RawlogReaderFiles, IgnoresBytesAfterTheLastMemberAsMrptDoes)
+{
+	Bytes bytes = fileBytes(writtenByLvfusion("members.rawlog"));
+	for (char c : std::string("not gzip")) bytes.push_back(uint8_t(c));
+	writeBytes(path("trailing.rawlog"), bytes);
+	EXPECT_EQ(readByLvfusion(path("trailing.rawlog")), expected());
+	EXPECT_EQ(readByMrpt(path("trailing.rawlog")), expected());
+}
+
+TEST_F(RawlogReaderFiles, ALogCutShortOrCorruptedIsAnErrorNamingTheRecord)
+{
+	const Bytes whole = fileBytes(writtenByLvfusion("members.rawlog"));
+	const std::string cut = path("cut.rawlog"), corrupt = path("corrupt.rawlog");
+	writeBytes(cut, Bytes(whole.begin(), whole.begin() + long(whole.size() * 6 / 10)));
+	Bytes spoilt = whole;
+	for (size_t i = whole.size() / 3; i < whole.size() / 3 + 64; i++) spoilt[i] ^= 0x5a;
+	writeBytes(corrupt, spoilt);
+	for (const auto& file : {cut, corrupt})
+	{
+		try
+		{
+			readByLvfusion(file);
+			ADD_FAILURE() << file << ": no error";
+		}
+		catch (const lvf::common::InputError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(file + ": record "), std::string::npos) << e.what();
+			EXPECT_NE(std::string(e.what()).find("corrupt, truncated or not a rawlog"), std::string::npos) << e.what();
+		}
+	}
+}
