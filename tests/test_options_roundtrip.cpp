@@ -94,6 +94,9 @@ TEST(Options, AKeyInTheWrongSectionIsRefusedWithWhereItBelongs)
 		"<memory>: [CLaserStereoFusion] z_max: unknown key (it belongs in [FocusedEpipolarSearch])");
 	EXPECT_EQ(fusionOptionsError("[ScanFusion]\nwindow_size = 9\n"),
 		"<memory>: [ScanFusion] window_size: unknown key (it belongs in [ModelEvaluator])");
+	// Misspelt too.
+	EXPECT_EQ(fusionOptionsError("[CLaserStereoFusion]\nzz_max = 4\n"),
+		"<memory>: [CLaserStereoFusion] zz_max: unknown key (did you mean [FocusedEpipolarSearch] z_max?)");
 }
 
 TEST(Options, AMisspeltSectionIsRefusedWithTheSectionLikelyMeant)

@@ -197,19 +197,30 @@ void rejectKeysOfOtherSections(const mrpt::config::CConfigFileBase& cfg, const m
 {
 	std::vector<std::string> sections;
 	defaults.getAllSections(sections);
+	auto has = [](const std::vector<std::string>& keys, const std::string& key) {
+		return std::find(keys.begin(), keys.end(), key) != keys.end();
+	};
 	for (const auto& section : sections)
 	{
 		const auto own = keyNames(defaults, section);
 		for (const auto& key : keyNames(cfg, section))
 		{
-			if (std::find(own.begin(), own.end(), key) != own.end()) continue;
+			if (has(own, key)) continue;
+			auto unknown = [&](const std::string& why) {
+				return InputError(configSourceName(cfg), "[" + section + "] " + key, "unknown key (" + why + ")");
+			};
+			// Another section's key, as it is or misspelt (when the key's
+			// own section has none it is likely to be).
+			std::vector<std::string> nearOnes;
 			for (const auto& other : sections)
 			{
 				const auto theirs = keyNames(defaults, other);
-				if (std::find(theirs.begin(), theirs.end(), key) != theirs.end())
-					throw InputError(configSourceName(cfg), "[" + section + "] " + key,
-						"unknown key (it belongs in [" + other + "])");
+				if (has(theirs, key)) throw unknown("it belongs in [" + other + "]");
+				if (const auto meant = likelyMeant(key, theirs); !meant.empty())
+					nearOnes.push_back("[" + other + "] " + meant);
 			}
+			if (nearOnes.size() == 1 && likelyMeant(key, own).empty())
+				throw unknown("did you mean " + nearOnes.front() + "?");
 		}
 	}
 }

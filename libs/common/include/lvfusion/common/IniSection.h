@@ -61,9 +61,10 @@ class IniSection
 
 /** For options spread over several sections (`defaults`: every key in its
  * section, as saveToConfigFile writes them): throws InputError naming the
- * first key of `cfg` that is not in its own section but in another, and
- * where it belongs -- the likeliest slip after a typo. Keys in no section
- * are left to IniSection::rejectUnknownKeys. */
+ * first key of `cfg` that is not in its own section but in another -- as
+ * it is, or misspelt (likelyMeant) where its own section has no key it is
+ * likely to mean -- and where it belongs: the likeliest slip after a typo.
+ * Other unknown keys are left to IniSection::rejectUnknownKeys. */
 void rejectKeysOfOtherSections(
 	const mrpt::config::CConfigFileBase& cfg, const mrpt::config::CConfigFileBase& defaults);
 
