@@ -1,8 +1,9 @@
 // RawlogReader reads what MRPT's own reader reads, object for object and
 // byte for byte -- a rawlog as MRPT writes it (one zlib stream), as
 // lvfusion writes it (several gzip members), not compressed, or with bytes
-// after its last member -- though it inflates with igzip (GzipInputFile.h);
-// and a rawlog cut short or corrupted is one InputError naming the record.
+// after its last member, and the real logs at hand -- though it inflates
+// with igzip (GzipInputFile.h); and a rawlog cut short or corrupted is one
+// InputError naming the record.
 
 #include "TestWorlds.h"
 
@@ -45,18 +46,25 @@ std::vector<Bytes> readByLvfusion(const std::string& path)
 	return out;
 }
 
-/** The same, as MRPT's own gzip reader reads them. */
-std::vector<Bytes> readByMrpt(const std::string& path)
+/** The same, as MRPT's own gzip reader reads them; `refused`: whether it
+ * stopped at an object it could not read rather than at the file's end. */
+std::vector<Bytes> readByMrpt(const std::string& path, bool* refused = nullptr)
 {
 	std::vector<Bytes> out;
 	mrpt::io::CFileGZInputStream in(path);
 	auto archive = mrpt::serialization::archiveFrom(in);
+	if (refused) *refused = false;
 	try
 	{
 		for (;;) out.push_back(serialized(*archive.ReadObject()));
 	}
 	catch (const mrpt::serialization::CExceptionEOF&)
 	{
+	}
+	catch (const std::exception&)
+	{
+		if (!refused) throw;
+		*refused = true;
 	}
 	return out;
 }
@@ -173,5 +181,36 @@ TEST_F(RawlogReaderFiles, ALogCutShortOrCorruptedIsAnErrorNamingTheRecord)
 			EXPECT_NE(std::string(e.what()).find(file + ": record "), std::string::npos) << e.what();
 			EXPECT_NE(std::string(e.what()).find("corrupt, truncated or not a rawlog"), std::string::npos) << e.what();
 		}
+	}
+}
+
+TEST(RawlogReaderRealLogs, ReadsEachAsMrptDoes)
+{
+	// The laser logs beside the project and MRPT's own datasets (mrpt-common):
+	// one zlib stream each, and one of MRPT's not compressed.
+	std::vector<fs::path> logs;
+	for (const std::string& dir : {std::string(LVF_SHARED_DATA_DIR) + "/laser", std::string("/usr/share/mrpt/datasets")})
+		if (fs::is_directory(dir))
+			for (const auto& e : fs::directory_iterator(dir))
+				if (e.path().extension() == ".rawlog") logs.push_back(e.path());
+	if (logs.empty()) GTEST_SKIP() << "no real logs here";
+	for (const auto& log : logs)
+	{
+		bool mrptRefused = false;
+		const auto mrpt = readByMrpt(log.string(), &mrptRefused);
+		std::vector<Bytes> ours;
+		bool oursRefused = false;
+		lvf::common::RawlogReader reader(log.string());
+		try
+		{
+			while (auto object = reader.next()) ours.push_back(serialized(*object));
+		}
+		catch (const lvf::common::InputError&)
+		{
+			oursRefused = true;
+		}
+		EXPECT_EQ(ours.size(), mrpt.size()) << log;
+		EXPECT_TRUE(ours == mrpt) << log;
+		EXPECT_EQ(oursRefused, mrptRefused) << log;
 	}
 }
