@@ -92,13 +92,18 @@ size_t GzipInputFile::readInflated(uint8_t* out, size_t count)
 		const size_t chunk = std::min<size_t>(count - done, size_t{1} << 30);
 		m_state->next_out = out + done;
 		m_state->avail_out = static_cast<uint32_t>(chunk);
+		const uint32_t inputBefore = m_state->avail_in;
 		const int result = isal_inflate(m_state.get());
 		if (result < 0) throw std::runtime_error(m_path + ": corrupt gzip data (igzip error " + std::to_string(result) + ")");
 		const size_t produced = chunk - m_state->avail_out;
 		done += produced;
-		// Nothing more to come from a member that has not ended: cut short.
-		if (!fileLeft && produced == 0 && m_state->block_state != ISAL_BLOCK_FINISH)
-			throw std::runtime_error(m_path + ": gzip data cut short");
+		if (produced == 0 && m_state->block_state != ISAL_BLOCK_FINISH)
+		{
+			// Nothing more to come from a member that has not ended: cut
+			// short. (And never a loop on input igzip will not take.)
+			if (!fileLeft) throw std::runtime_error(m_path + ": gzip data cut short");
+			if (m_state->avail_in == inputBefore) throw std::runtime_error(m_path + ": corrupt gzip data");
+		}
 	}
 	return done;
 }
