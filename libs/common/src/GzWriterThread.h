@@ -7,7 +7,8 @@
 //
 // Entries are gathered until they reach a megabyte and written as one gzip
 // member (GzipMemberFile.h): a member large enough that starting each one
-// afresh costs nothing measurable (+0.2 % in size).
+// afresh costs nothing measurable (a long log's output, 174 MB: 94.7 MB in
+// members, 95.2 MB as one stream from the igzip tool at the same level).
 //
 // The bytes reach the file in the order they were handed over. A write that
 // fails (a full disk) is reported by the next write() or by close() as the
