@@ -45,8 +45,11 @@ for rig in "24 16 17" "64 48 45"; do
     -e "s/^cx .*/cx = $((cols / 2)).5/" -e "s/^cy .*/cy = $((rows / 2)).5/" share/lvfusion/config/sensors.ini > "$seeds/rig.ini"
   for format in sf obs; do
     build/bin/lvf-simulate -q --config "$seeds/rig.ini" --frames 1 --format $format --outdir "$seeds/tmp" --name rig
-    # uncompressed, so that mutations reach the objects, not zlib's checks
+    # Uncompressed, so that mutations reach the objects, not the gzip
+    # checks; and as written, so that they reach the gzip reader too
+    # (GzipInputFile.h).
     gzip -dc "$seeds/tmp/rig.rawlog" > "$seeds/rawlog/${cols}x${rows}_$format.rawlog"
+    cp "$seeds/tmp/rig.rawlog" "$seeds/rawlog/${cols}x${rows}_$format.gz.rawlog"
   done
 done
 rm -rf "$seeds/tmp" "$seeds/rig.ini"
