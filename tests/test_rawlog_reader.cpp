@@ -161,6 +161,21 @@ TEST_F(RawlogReaderFiles, IgnoresBytesAfterTheLastMemberAsMrptDoes)
 	EXPECT_EQ(readByMrpt(path("trailing.rawlog")), expected());
 }
 
+TEST_F(RawlogReaderFiles, ReadsAMemberHeaderWithAFileNameAndAnEmptyMember)
+{
+	// What `gzip log.rawlog` writes: a header that names the file (FNAME,
+	// RFC 1952), here before an empty member and then lvfusion's members.
+	const Bytes members = fileBytes(writtenByLvfusion("members.rawlog"));
+	Bytes bytes = {0x1f, 0x8b, 8, 0x08, 0, 0, 0, 0, 0, 3};	 // deflate, FNAME, no time, Unix
+	for (char c : std::string("log.rawlog")) bytes.push_back(uint8_t(c));
+	bytes.push_back(0);
+	for (uint8_t b : {3, 0, 0, 0, 0, 0, 0, 0, 0, 0}) bytes.push_back(b);  // an empty final block, CRC 0, size 0
+	bytes.insert(bytes.end(), members.begin(), members.end());
+	writeBytes(path("named.rawlog"), bytes);
+	EXPECT_EQ(readByLvfusion(path("named.rawlog")), expected());
+	EXPECT_EQ(readByMrpt(path("named.rawlog")), expected());
+}
+
 TEST_F(RawlogReaderFiles, ALogCutShortOrCorruptedIsAnErrorNamingTheRecord)
 {
 	const Bytes whole = fileBytes(writtenByLvfusion("members.rawlog"));
