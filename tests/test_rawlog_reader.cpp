@@ -176,6 +176,25 @@ TEST_F(RawlogReaderFiles, ReadsAMemberHeaderWithAFileNameAndAnEmptyMember)
 	EXPECT_EQ(readByMrpt(path("named.rawlog")), expected());
 }
 
+TEST_F(RawlogReaderFiles, ReadsMembersWhoseHeadersStraddleTheReadBuffersEdges)
+{
+	// 20,000 empty members (400 kB, more than the reader takes from the file
+	// at a time) after a first one 0 to 19 bytes longer: between them, every
+	// position of a member's header across the edge of a read.
+	const Bytes members = fileBytes(writtenByLvfusion("members.rawlog"));
+	const Bytes empty = {0x1f, 0x8b, 8, 0, 0, 0, 0, 0, 0, 3, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+	for (int extra = 0; extra < 20; extra++)
+	{
+		Bytes bytes = {0x1f, 0x8b, 8, 0x08, 0, 0, 0, 0, 0, 3};	// a named member
+		bytes.insert(bytes.end(), size_t(extra), uint8_t('x'));
+		for (uint8_t b : {0, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0}) bytes.push_back(b);
+		for (int k = 0; k < 20000; k++) bytes.insert(bytes.end(), empty.begin(), empty.end());
+		bytes.insert(bytes.end(), members.begin(), members.end());
+		writeBytes(path("straddle.rawlog"), bytes);
+		EXPECT_EQ(readByLvfusion(path("straddle.rawlog")), expected()) << extra;
+	}
+}
+
 TEST_F(RawlogReaderFiles, ALogCutShortOrCorruptedIsAnErrorNamingTheRecord)
 {
 	const Bytes whole = fileBytes(writtenByLvfusion("members.rawlog"));
