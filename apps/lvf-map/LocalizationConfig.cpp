@@ -118,14 +118,6 @@ const std::set<std::string> kIgnoredExperimentKeys{
 	"init_PDF_min_z", "init_PDF_max_z", "init_PDF_min_pitch_deg", "init_PDF_max_pitch_deg",
 	"init_PDF_min_roll_deg", "init_PDF_max_roll_deg"};
 
-std::vector<std::string> keysOf(const mrpt::config::CConfigFileBase& c, const std::string& section)
-{
-	std::vector<std::string> keys;
-	c.getAllKeys(section, keys);
-	for (auto& k : keys) k = mrpt::system::trim(k);
-	return keys;
-}
-
 /** Writes the user's pf-localization keys over the defaults, rejecting
  * sections and keys the defaults do not know. */
 void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CConfigFileMemory& merged)
@@ -140,8 +132,8 @@ void overlayUserKeys(const mrpt::config::CConfigFileBase& user, mrpt::config::CC
 		if (section.empty() || section == kPlannerSection || section == kGlobalMapsSection) continue;
 		if (std::find(known.begin(), known.end(), section) == known.end())
 			throw InputError(source, "[" + section + "]", "unknown section" + lvf::common::didYouMean(section, known));
-		const auto defaults = keysOf(merged, section);
-		for (const auto& key : keysOf(user, section))
+		const auto defaults = lvf::common::keyNames(merged, section);
+		for (const auto& key : lvf::common::keyNames(user, section))
 		{
 			const bool ignored = section == kExperiment && kIgnoredExperimentKeys.count(key);
 			if (!ignored && std::find(defaults.begin(), defaults.end(), key) == defaults.end())
@@ -226,7 +218,7 @@ void LocalizationConfig::readExperiment(const mrpt::config::CConfigFileBase& cfg
 	lvf::common::IniSection ini(cfg, kExperiment);
 	// A file that gives any of the initial box gives all of it, with
 	// pf-localization's defaults (0 m, +-180 deg) for what it leaves out.
-	const auto keys = keysOf(cfg, kExperiment);
+	const auto keys = lvf::common::keyNames(cfg, kExperiment);
 	if (std::any_of(keys.begin(), keys.end(), [](const std::string& k) { return k.rfind("init_PDF_m", 0) == 0; }))
 	{
 		initMin = {0, 0, -M_PI};

@@ -3,6 +3,7 @@
 #include <lvfusion/common/LikelyMeant.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>
+#include <mrpt/system/string_utils.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,9 @@ namespace lvf::common
 {
 namespace
 {
-/** A key as MRPT's parser stores it may keep the blanks before its '='. */
-std::string keyName(std::string stored)
-{
-	stored.erase(stored.find_last_not_of(" \t") + 1);
-	return stored;
-}
+/** A key as MRPT's parser stores it may keep the blanks around it. */
+std::string keyName(const std::string& stored) { return mrpt::system::trim(stored); }
+}  // namespace
 
 std::vector<std::string> keyNames(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {
@@ -27,7 +25,6 @@ std::vector<std::string> keyNames(const mrpt::config::CConfigFileBase& cfg, cons
 	for (auto& k : keys) k = keyName(k);
 	return keys;
 }
-}  // namespace
 
 std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 {
@@ -197,12 +194,14 @@ void rejectKeysOfOtherSections(const mrpt::config::CConfigFileBase& cfg, const m
 {
 	std::vector<std::string> sections;
 	defaults.getAllSections(sections);
+	std::map<std::string, std::vector<std::string>> keysOf;	 // every section's, once
+	for (const auto& section : sections) keysOf[section] = keyNames(defaults, section);
 	auto has = [](const std::vector<std::string>& keys, const std::string& key) {
 		return std::find(keys.begin(), keys.end(), key) != keys.end();
 	};
 	for (const auto& section : sections)
 	{
-		const auto own = keyNames(defaults, section);
+		const auto& own = keysOf[section];
 		for (const auto& key : keyNames(cfg, section))
 		{
 			if (has(own, key)) continue;
@@ -214,7 +213,7 @@ void rejectKeysOfOtherSections(const mrpt::config::CConfigFileBase& cfg, const m
 			std::vector<std::string> nearOnes;
 			for (const auto& other : sections)
 			{
-				const auto theirs = keyNames(defaults, other);
+				const auto& theirs = keysOf[other];
 				if (has(theirs, key)) throw unknown("it belongs in [" + other + "]");
 				if (const auto meant = likelyMeant(key, theirs); !meant.empty())
 					nearOnes.push_back("[" + other + "] " + meant);

@@ -1,5 +1,4 @@
 #include <lvfusion/common/IniSection.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <lvfusion/evaluation/ModelDisparity.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 #include <lvfusion/fusion/CalibrationEvidence.h>
@@ -41,10 +40,7 @@ void CLaserStereoFusion::TOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
 	lvf::common::rejectUnknownSections(source, {section, kLines, kEvaluation, kDepth, kGrowth, kFusion, kMemory});
-	// Every key in its section, to say where a key put in the wrong one belongs.
-	mrpt::config::CConfigFileMemory defaults;
-	TOptions().saveToConfigFile(defaults, section);
-	lvf::common::rejectKeysOfOtherSections(source, defaults);
+	lvf::common::rejectKeysOfOtherSections<TOptions>(source, section);
 	lvf::common::IniSection ini(source, section);
 	band.low = ini.real("obstacle_min_height", band.low, 0, 100);
 	band.high = ini.real("robot_height", band.high, band.low, 100);

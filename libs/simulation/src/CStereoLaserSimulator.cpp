@@ -1,5 +1,4 @@
 #include <lvfusion/common/IniSection.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/simulation/CStereoLaserSimulator.h>
 #include <lvfusion/simulation/GroundTruth.h>
@@ -22,10 +21,7 @@ void CStereoLaserSimulator::TOptions::loadFromConfigFile(
 {
 	lvf::common::rejectUnknownSections(
 		source, {section, kLaserSection, kStereoSection, kOdometrySection});
-	// Every key in its section, to say where a key put in the wrong one belongs.
-	mrpt::config::CConfigFileMemory defaults;
-	TOptions().saveToConfigFile(defaults, section);
-	lvf::common::rejectKeysOfOtherSections(source, defaults);
+	lvf::common::rejectKeysOfOtherSections<TOptions>(source, section);
 	lvf::common::IniSection ini(source, section);
 	seed = static_cast<uint32_t>(ini.integer("seed", int(seed), 0));
 	framePeriod = ini.real("frame_period", framePeriod, 1e-3, 3600);

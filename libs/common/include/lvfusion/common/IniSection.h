@@ -8,6 +8,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <memory>
 
@@ -67,6 +68,20 @@ class IniSection
  * Other unknown keys are left to IniSection::rejectUnknownKeys. */
 void rejectKeysOfOtherSections(
 	const mrpt::config::CConfigFileBase& cfg, const mrpt::config::CConfigFileBase& defaults);
+
+/** The same for an options class whose `section` names the first of its
+ * sections: `defaults` are what Options() saves there. */
+template <class Options>
+void rejectKeysOfOtherSections(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	mrpt::config::CConfigFileMemory defaults;
+	Options().saveToConfigFile(defaults, section);
+	rejectKeysOfOtherSections(cfg, defaults);
+}
+
+/** The names of the keys of `section` in `cfg` (blanks around them, which
+ * MRPT's parser may keep, trimmed). */
+std::vector<std::string> keyNames(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 
 /** Throws InputError naming the first section of `cfg` not in `known`
  * (and the one likely meant). */
