@@ -37,12 +37,23 @@ Bytes serialized(const mrpt::serialization::CSerializable& object)
 	return bytes;
 }
 
-/** Every object of the file as RawlogReader reads it, serialized again. */
-std::vector<Bytes> readByLvfusion(const std::string& path)
+/** Every object of the file as RawlogReader reads it, serialized again;
+ * `refused`: whether it stopped at an InputError rather than at the file's
+ * end (without it, the InputError is thrown on). */
+std::vector<Bytes> readByLvfusion(const std::string& path, bool* refused = nullptr)
 {
 	std::vector<Bytes> out;
-	lvf::common::RawlogReader reader(path);
-	while (auto object = reader.next()) out.push_back(serialized(*object));
+	if (refused) *refused = false;
+	try
+	{
+		lvf::common::RawlogReader reader(path);
+		while (auto object = reader.next()) out.push_back(serialized(*object));
+	}
+	catch (const lvf::common::InputError&)
+	{
+		if (!refused) throw;
+		*refused = true;
+	}
 	return out;
 }
 
@@ -232,17 +243,8 @@ TEST(RawlogReaderRealLogs, ReadsEachAsMrptDoes)
 	{
 		bool mrptRefused = false;
 		const auto mrpt = readByMrpt(log.string(), &mrptRefused);
-		std::vector<Bytes> ours;
 		bool oursRefused = false;
-		lvf::common::RawlogReader reader(log.string());
-		try
-		{
-			while (auto object = reader.next()) ours.push_back(serialized(*object));
-		}
-		catch (const lvf::common::InputError&)
-		{
-			oursRefused = true;
-		}
+		const auto ours = readByLvfusion(log.string(), &oursRefused);
 		EXPECT_EQ(ours.size(), mrpt.size()) << log;
 		EXPECT_TRUE(ours == mrpt) << log;
 		EXPECT_EQ(oursRefused, mrptRefused) << log;
