@@ -102,9 +102,9 @@ TEST_P(ParallelFusion, TheSameResultOnAnyNumberOfThreadsBitForBit)
 			SCOPED_TRACE("room " + std::to_string(seed) + ", frame " + std::to_string(k));
 			const auto &a = one[k], &b = several[k];
 			EXPECT_TRUE(sameBits(a.evaluation.state, b.evaluation.state));
-			EXPECT_TRUE(sameBits(a.evaluation.ncc, b.evaluation.ncc));
-			EXPECT_TRUE(sameBits(a.evaluation.leftMean, b.evaluation.leftMean));
-			EXPECT_TRUE(sameBits(a.evaluation.leftStd, b.evaluation.leftStd));
+			EXPECT_TRUE(sameBits(a.evaluation.gridNcc, b.evaluation.gridNcc));
+			EXPECT_TRUE(sameBits(a.evaluation.gridLeftMean, b.evaluation.gridLeftMean));
+			EXPECT_TRUE(sameBits(a.evaluation.gridLeftStd, b.evaluation.gridLeftStd));
 			EXPECT_EQ(a.evaluation.counts, b.evaluation.counts);
 			EXPECT_TRUE(sameBits(a.search.outcome, b.search.outcome));
 			expectSameStats(a.search.stats, b.search.stats);

@@ -80,26 +80,26 @@ ModelEvaluation ModelEvaluator::evaluate(
 	cv::Mat1f L;
 	left.convertTo(L, CV_32F);
 	cv::Mat1f meanW, meanLL, meanWW, meanLW;
-	cv::blur(L, out.leftMean, window);
+	cv::blur(L, out.gridLeftMean, window);
 	cv::blur(warped, meanW, window);
 	cv::blur(L.mul(L), meanLL, window);
 	cv::blur(warped.mul(warped), meanWW, window);
 	cv::blur(L.mul(warped), meanLW, window);
 
-	const cv::Mat1f varL = cv::max(meanLL - out.leftMean.mul(out.leftMean), 0.0);
+	const cv::Mat1f varL = cv::max(meanLL - out.gridLeftMean.mul(out.gridLeftMean), 0.0);
 	const cv::Mat1f varW = cv::max(meanWW - meanW.mul(meanW), 0.0);
-	cv::sqrt(varL, out.leftStd);
+	cv::sqrt(varL, out.gridLeftStd);
 	cv::Mat1f denominator;
 	cv::sqrt(varL.mul(varW) + 1e-6, denominator);
-	cv::divide(meanLW - out.leftMean.mul(meanW), denominator, out.ncc);
+	cv::divide(meanLW - out.gridLeftMean.mul(meanW), denominator, out.gridNcc);
 	const double minVar = out.textureGate * out.textureGate;
 	// A flat right window against a textured left one is a mismatch, not a
 	// lack of evidence: its NCC is taken as 0.
-	out.ncc.setTo(0, varW < minVar);
+	out.gridNcc.setTo(0, varW < minVar);
 
 	// States, the later rules overriding the earlier ones.
 	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::Consistent));
-	out.state.setTo(static_cast<uint8_t>(PixelState::Inconsistent), out.ncc < m_options.nccThreshold);
+	out.state.setTo(static_cast<uint8_t>(PixelState::Inconsistent), out.gridNcc < m_options.nccThreshold);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Untextured), varL < minVar);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Unverifiable), unverifiable);
 	out.state.setTo(static_cast<uint8_t>(PixelState::Unmodelled), (modelDisparity <= 0) & (varL >= minVar));
@@ -124,9 +124,14 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	cv::Mat1b unverifiable;
 	warpForJudging(right, modelDisparity, geometry, rectification, warped, unverifiable);
 
-	out.ncc = cv::Mat1f::zeros(size);
-	out.leftMean = cv::Mat1f::zeros(size);
-	out.leftStd = cv::Mat1f::zeros(size);
+	// The grid's rows and columns where a window fits; every one is
+	// written below.
+	const int gridRows = std::max(0, (size.height - half - first + stride - 1) / stride);
+	const int columns = std::max(0, (size.width - half - first + stride - 1) / stride);
+	out.grid = PixelGrid{first, stride};
+	out.gridNcc.create(gridRows, columns);
+	out.gridLeftMean.create(gridRows, columns);
+	out.gridLeftStd.create(gridRows, columns);
 	out.state = cv::Mat1b(size, static_cast<uint8_t>(PixelState::NotEvaluated));
 	const double area = double(m_options.windowSize * m_options.windowSize);
 	const double minVar = out.textureGate * out.textureGate;
@@ -140,19 +145,19 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 		// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
 		GridWindowSums sums(left, warped, unverifiable, half);
 		GridRowNcc row(area, minVar);
-		const int columns = std::max(0, (size.width - half - first + stride - 1) / stride);
 		auto& counts = bandCounts[static_cast<size_t>(b)];
 		for (int v = firstRow; v < endRow; v += stride)
 		{
 			sums.moveTo(v);
 			row.compute(sums, first, stride, columns);
+			const int j = out.grid.index(v);
 			for (int i = 0, u = first; i < columns; i++, u += stride)
 			{
 				// The same rules, in the same order, as evaluate().
 				const double ncc = row.ncc(i), varL = row.leftVariance(i);
-				out.leftMean(v, u) = static_cast<float>(row.leftMean(i));
-				out.leftStd(v, u) = static_cast<float>(row.leftStd(i));
-				out.ncc(v, u) = static_cast<float>(ncc);
+				out.gridLeftMean(j, i) = static_cast<float>(row.leftMean(i));
+				out.gridLeftStd(j, i) = static_cast<float>(row.leftStd(i));
+				out.gridNcc(j, i) = static_cast<float>(ncc);
 				PixelState s = ncc < m_options.nccThreshold ? PixelState::Inconsistent : PixelState::Consistent;
 				if (varL < minVar) s = PixelState::Untextured;
 				if (row.unverifiable(i) > 0) s = PixelState::Unverifiable;

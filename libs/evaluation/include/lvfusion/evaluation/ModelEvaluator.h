@@ -34,12 +34,36 @@ enum class PixelState : uint8_t
 	NotEvaluated = 5  //!< off the grid of evaluateGrid()
 };
 
+/** Pixels (first + j stride, first + i stride) of an image, j and i from 0:
+ * those evaluateGrid() judges (evaluate(): every pixel). */
+struct PixelGrid
+{
+	int first = 0, stride = 1;
+	/** The grid row (or column) of image row (or column) `coordinate`,
+	 * which must lie on the grid. */
+	int index(int coordinate) const { return (coordinate - first) / stride; }
+	bool contains(int coordinate) const { return coordinate >= first && (coordinate - first) % stride == 0; }
+};
+
 struct ModelEvaluation
 {
-	cv::Mat1f modelDisparity;  //!< [px], 0: no model surface
-	cv::Mat1f ncc;	//!< left vs model-warped right, in [-1, 1]
+	cv::Mat1f modelDisparity;  //!< [px], 0: no model surface; every pixel
 	cv::Mat1b state;  //!< PixelState per pixel
-	cv::Mat1f leftMean, leftStd;  //!< window statistics of the left image
+	/** Where the NCC and the left window statistics were computed. They
+	 * are held for those pixels only (evaluateGrid: a ninth of the image at
+	 * stride 3; whole-image matrices, cleared each frame for the pixels off
+	 * the grid, cost 3 % of the fusion's time), row j column i of the grid
+	 * matrices for pixel (first + j stride, first + i stride). */
+	PixelGrid grid;
+	cv::Mat1f gridNcc;  //!< left vs model-warped right, in [-1, 1]
+	cv::Mat1f gridLeftMean, gridLeftStd;  //!< window statistics of the left image
+
+	/** At pixel (v, u), which must be one of the grid's where a window fits
+	 * (PixelState other than NotEvaluated). */
+	float ncc(int v, int u) const { return gridNcc(grid.index(v), grid.index(u)); }
+	float leftMean(int v, int u) const { return gridLeftMean(grid.index(v), grid.index(u)); }
+	float leftStd(int v, int u) const { return gridLeftStd(grid.index(v), grid.index(u)); }
+
 	double noiseStd = 0;  //!< the left image's noise (ImageNoise.h) [grey levels]
 	double textureGate = 0;	 //!< windows whose std is below this were untextured [grey levels]
 	std::array<size_t, 6> counts{};	 //!< pixels per PixelState
@@ -102,10 +126,11 @@ class ModelEvaluator
 		const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
 		const RectificationEffects& rectification = {}) const;
 
-	/** The same judgement, only at pixels (first + i stride, first + j
+	/** The same judgement, only at pixels (first + j stride, first + i
 	 * stride) whose window lies inside the image (first >= windowSize / 2
 	 * for all of them); every other pixel is NotEvaluated, and the window
-	 * statistics and NCC are 0 there. */
+	 * statistics and NCC are held for the judged ones only
+	 * (ModelEvaluation::grid). */
 	ModelEvaluation evaluateGrid(
 		const cv::Mat1b& left, const cv::Mat1b& right, const cv::Mat1f& modelDisparity,
 		const RectifiedGeometry& geometry, int first, int stride,
