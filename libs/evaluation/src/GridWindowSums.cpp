@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,55 @@ LVF_VECTOR_CLONES void accumulateRow(int sign,
 		unverifiable[x] += sign * int32_t(bad[x] != 0);
 	}
 }
+
+typedef uint32_t U32x8 __attribute__((vector_size(32)));
+typedef int64_t I64x4 __attribute__((vector_size(32)));
+typedef int32_t I32x4 __attribute__((vector_size(16)));
+
+/** prefix[0] = 0, prefix[x + 1] = prefix[x] + columns[x], modulo 2^32.
+ * Eight at a time: a block's own running sums by three shifted adds, then
+ * the total so far added to every lane (a scalar loop waits for each
+ * addition; GCC does not vectorise a running sum by itself). */
+LVF_VECTOR_CLONES void prefixSums32(const int32_t* __restrict columns, int n, uint32_t* __restrict prefix)
+{
+	const U32x8 zero = {};
+	U32x8 total = {};  // every lane: the sum of the columns before this block
+	prefix[0] = 0;
+	int x = 0;
+	for (; x + 8 <= n; x += 8)
+	{
+		U32x8 v;
+		std::memcpy(&v, columns + x, sizeof v);
+		v += __builtin_shuffle(v, zero, U32x8{8, 0, 1, 2, 3, 4, 5, 6});
+		v += __builtin_shuffle(v, zero, U32x8{8, 8, 0, 1, 2, 3, 4, 5});
+		v += __builtin_shuffle(v, zero, U32x8{8, 8, 8, 8, 0, 1, 2, 3});
+		v += total;
+		std::memcpy(prefix + x + 1, &v, sizeof v);
+		total = __builtin_shuffle(v, U32x8{7, 7, 7, 7, 7, 7, 7, 7});
+	}
+	for (uint32_t running = prefix[x]; x < n; x++) prefix[x + 1] = running += static_cast<uint32_t>(columns[x]);
+}
+
+/** The same in 64 bits, four at a time (W^2's window sums need them). */
+LVF_VECTOR_CLONES void prefixSums64(const int32_t* __restrict columns, int n, int64_t* __restrict prefix)
+{
+	const I64x4 zero = {};
+	I64x4 total = {};
+	prefix[0] = 0;
+	int x = 0;
+	for (; x + 4 <= n; x += 4)
+	{
+		I32x4 narrow;
+		std::memcpy(&narrow, columns + x, sizeof narrow);
+		I64x4 v = __builtin_convertvector(narrow, I64x4);
+		v += __builtin_shuffle(v, zero, I64x4{4, 0, 1, 2});
+		v += __builtin_shuffle(v, zero, I64x4{4, 4, 0, 1});
+		v += total;
+		std::memcpy(prefix + x + 1, &v, sizeof v);
+		total = __builtin_shuffle(v, I64x4{3, 3, 3, 3});
+	}
+	for (int64_t running = prefix[x]; x < n; x++) prefix[x + 1] = running += columns[x];
+}
 }  // namespace
 
 GridWindowSums::GridWindowSums(
@@ -57,6 +107,7 @@ GridWindowSums::GridWindowSums(
 		m_columns[q].assign(static_cast<size_t>(left.cols), 0);
 		m_prefix[q].assign(static_cast<size_t>(left.cols) + 1, 0);
 	}
+	m_prefixWW.assign(static_cast<size_t>(left.cols) + 1, 0);
 }
 
 void GridWindowSums::addRow(int v, int sign)
@@ -75,19 +126,20 @@ void GridWindowSums::moveTo(int v)
 		m_row, v, m_half, [&] { for (auto& c : m_columns) std::fill(c.begin(), c.end(), 0); },
 		[&](int y, int sign) { addRow(y, sign); });
 	m_row = v;
-	// All six running sums in one pass: six independent chains of additions
-	// (one quantity at a time, each addition waited for the one before).
-	int64_t running[kQuantities] = {};
-	for (size_t x = 0; x < m_columns[0].size(); x++)
-		for (int q = 0; q < kQuantities; q++) m_prefix[q][x + 1] = running[q] += m_columns[q][x];
+	const int n = m_left.cols;
+	for (int q = 0; q < kQuantities; q++)
+		if (q != WW) prefixSums32(m_columns[q].data(), n, m_prefix[q].data());
+	prefixSums64(m_columns[WW].data(), n, m_prefixWW.data());
 }
 
 GridWindowSums::Sums GridWindowSums::at(int u) const
 {
 	assert(u - m_half >= 0 && u + m_half < m_left.cols);
 	const auto lo = static_cast<size_t>(u - m_half), hi = static_cast<size_t>(u + m_half + 1);
-	auto sum = [&](int q) { return m_prefix[q][hi] - m_prefix[q][lo]; };
-	return {sum(L), sum(LL), sum(W), sum(WW), sum(LW), sum(Bad)};
+	// The difference of two running sums modulo 2^32 is the window's sum
+	// exactly, for it lies in [0, 2^32) (the header).
+	auto sum = [&](int q) { return int64_t{static_cast<uint32_t>(m_prefix[q][hi] - m_prefix[q][lo])}; };
+	return {sum(L), sum(LL), sum(W), m_prefixWW[hi] - m_prefixWW[lo], sum(LW), sum(Bad)};
 }
 
 }  // namespace lvf::evaluation

@@ -53,9 +53,13 @@ class GridWindowSums
 	const int m_half;
 	int m_row = -1;
 	/** Per quantity, the column sums over the current window rows, then
-	 * their prefix sums along the row (one more entry than columns). */
+	 * their running sums along the row (one more entry than columns):
+	 * modulo 2^32, as every window's sum but W^2's lies in [0, 2^32) for
+	 * windows up to kMaxWindow (L W: 31^2 x 255 x 8160 < 2^31), so the
+	 * difference of two gives it exactly; W^2's in 64 bits (m_prefixWW). */
 	std::vector<int32_t> m_columns[kQuantities];
-	std::vector<int64_t> m_prefix[kQuantities];
+	std::vector<uint32_t> m_prefix[kQuantities];
+	std::vector<int64_t> m_prefixWW;
 };
 
 }  // namespace lvf::evaluation
