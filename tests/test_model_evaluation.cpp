@@ -439,6 +439,31 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 		}
 	}
 	EXPECT_GT(compared, 4000u);
+	{
+		// White images and the largest window: the running sums along a row
+		// pass 2^32 many times over (they are kept modulo 2^32), and L W's
+		// window sum comes within 7 % of 2^31.
+		const cv::Mat1b white(120, 640, uint8_t{255});
+		const cv::Mat1f whiteWarped(white.size(), 255.f);
+		const cv::Mat1b none = cv::Mat1b::zeros(white.size());
+		const int half = 15;
+		GridWindowSums sums(white, whiteWarped, none, half);
+		const int64_t area = (2 * half + 1) * (2 * half + 1);
+		for (int v : {half, half + 3, white.rows - 1 - half})
+		{
+			sums.moveTo(v);
+			for (int u : {half, 300, white.cols - 1 - half})
+			{
+				const GridWindowSums::Sums got = sums.at(u);
+				ASSERT_EQ(got.l, area * 255);
+				ASSERT_EQ(got.ll, area * 255 * 255);
+				ASSERT_EQ(got.w32, area * 255 * 32);
+				ASSERT_EQ(got.ww1024, area * 255 * 255 * 1024);
+				ASSERT_EQ(got.lw32, area * 255 * 255 * 32);
+				ASSERT_EQ(got.unverifiable, 0);
+			}
+		}
+	}
 	// 33 rows of W^2 would overflow the 32-bit column sums: refused.
 	cv::Mat1f warped;
 	cv::Mat1b unverifiable;
