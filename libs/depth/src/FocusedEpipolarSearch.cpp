@@ -137,7 +137,11 @@ void FocusedEpipolarSearch::searchRows(
 				outcome(v, u) = static_cast<uint8_t>(o);
 				counter++;
 			};
-			if (evaluation.leftStd(v, u) < frame.textureGate)
+			// The pixel's place on the evaluation's grid, once (a division
+			// each way).
+			const int gridRow = evaluation.grid.index(v), gridColumn = evaluation.grid.index(u);
+			const float leftStd = evaluation.gridLeftStd(gridRow, gridColumn);
+			if (leftStd < frame.textureGate)
 			{
 				mark(SearchOutcome::Untextured, stats.skippedUntextured);
 				continue;
@@ -164,7 +168,7 @@ void FocusedEpipolarSearch::searchRows(
 				}
 			}
 			stats.searchedPixels++;
-			const PixelQuery query{u, v, evaluation.leftMean(v, u), evaluation.leftStd(v, u), dModel, set, g};
+			const PixelQuery query{u, v, evaluation.gridLeftMean(gridRow, gridColumn), leftStd, dModel, set, g};
 			const Match m = coarse ? matchCoarseToFine(full, *coarse, query) : matchAtFullResolution(full, query);
 			switch (m.outcome)
 			{

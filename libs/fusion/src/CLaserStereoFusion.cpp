@@ -194,8 +194,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 	// Every judged pixel: the whole image, or the search grid (timed with
 	// the model check it reads).
 	const CalibrationEvidence evidence = timed(r.times.evaluate, [&] {
-		return calibrationEvidence(
-			r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc, gridFirst, gridStride);
+		return calibrationEvidence(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc);
 	});
 	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
 	const bool floorJudgeable = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels;

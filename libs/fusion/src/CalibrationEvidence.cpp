@@ -9,22 +9,27 @@ using lvf::evaluation::PixelState;
 
 CalibrationEvidence calibrationEvidence(
 	const lvf::evaluation::RectifiedGeometry& g, const lvf::evaluation::ModelEvaluation& evaluation,
-	double floorHeight, double agreeingNcc, int first, int stride)
+	double floorHeight, double agreeingNcc)
 {
 	CalibrationEvidence out;
 	const double height = g.leftPose.z() - floorHeight;	 // camera above the floor [m]
 	// The z row of robotRay()'s rotation, taken once rather than with each
-	// pixel's ray (2 % of the fusion's time), and summed in the same order.
+	// pixel's ray, and summed in the same order.
 	const Eigen::Matrix3d R = g.leftPose.getRotationMatrix().asEigen();
 	const double r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
-	for (int v = first; v < g.size.height; v += stride)
+	// Over the grid's own rows and columns, reading its values by index.
+	const lvf::evaluation::PixelGrid& grid = evaluation.grid;
+	for (int j = 0; j < evaluation.gridNcc.rows; j++)
 	{
+		const int v = grid.first + j * grid.stride;
 		const double r21y = r21 * g.rayY(v);
-		for (int u = first; u < g.size.width; u += stride)
+		const float* ncc = evaluation.gridNcc.ptr<float>(j);
+		for (int i = 0; i < evaluation.gridNcc.cols; i++)
 		{
+			const int u = grid.first + i * grid.stride;
 			const auto state = static_cast<PixelState>(evaluation.state(v, u));
 			if (state != PixelState::Consistent && state != PixelState::Inconsistent) continue;
-			const bool agrees = evaluation.ncc(v, u) >= agreeingNcc;
+			const bool agrees = ncc[i] >= agreeingNcc;
 			out.judged++;
 			out.disagreeing += !agrees;
 			// Depth Z of the floor along this pixel's ray: height + Z ray.z = 0.

@@ -35,13 +35,13 @@ struct CalibrationEvidence
 	double disagreeingShare() const { return judged ? double(disagreeing) / double(judged) : 0.0; }
 };
 
-/** Counts over the pixels of the grid of rows and columns first,
- * first + stride, ... (where the evaluation judged: all of them, or the
- * grid of ModelEvaluator::evaluateGrid): the floor's pixels are those whose
- * model disparity is that of the floor at `floorHeight` (robot frame); a
- * pixel agrees at an NCC of `agreeingNcc` or more. */
+/** Counts over the pixels the evaluation judged (all of them, or the grid
+ * of ModelEvaluator::evaluateGrid: ModelEvaluation::grid): the floor's
+ * pixels are those whose model disparity is that of the floor at
+ * `floorHeight` (robot frame); a pixel agrees at an NCC of `agreeingNcc` or
+ * more. */
 CalibrationEvidence calibrationEvidence(
 	const lvf::evaluation::RectifiedGeometry& geometry, const lvf::evaluation::ModelEvaluation& evaluation,
-	double floorHeight, double agreeingNcc, int first = 0, int stride = 1);
+	double floorHeight, double agreeingNcc);
 
 }  // namespace lvf::fusion
