@@ -51,7 +51,8 @@ typedef int32_t I32x4 __attribute__((vector_size(16)));
 /** prefix[0] = 0, prefix[x + 1] = prefix[x] + columns[x], modulo 2^32.
  * Eight at a time: a block's own running sums by three shifted adds, then
  * the total so far added to every lane (a scalar loop waits for each
- * addition; GCC does not vectorise a running sum by itself). */
+ * addition; GCC does not vectorise a running sum by itself). Vector
+ * extensions GCC (12 on) and Clang share. */
 LVF_VECTOR_CLONES void prefixSums32(const int32_t* __restrict columns, int n, uint32_t* __restrict prefix)
 {
 	const U32x8 zero = {};
@@ -62,12 +63,12 @@ LVF_VECTOR_CLONES void prefixSums32(const int32_t* __restrict columns, int n, ui
 	{
 		U32x8 v;
 		std::memcpy(&v, columns + x, sizeof v);
-		v += __builtin_shuffle(v, zero, U32x8{8, 0, 1, 2, 3, 4, 5, 6});
-		v += __builtin_shuffle(v, zero, U32x8{8, 8, 0, 1, 2, 3, 4, 5});
-		v += __builtin_shuffle(v, zero, U32x8{8, 8, 8, 8, 0, 1, 2, 3});
+		v += __builtin_shufflevector(v, zero, 8, 0, 1, 2, 3, 4, 5, 6);
+		v += __builtin_shufflevector(v, zero, 8, 8, 0, 1, 2, 3, 4, 5);
+		v += __builtin_shufflevector(v, zero, 8, 8, 8, 8, 0, 1, 2, 3);
 		v += total;
 		std::memcpy(prefix + x + 1, &v, sizeof v);
-		total = __builtin_shuffle(v, U32x8{7, 7, 7, 7, 7, 7, 7, 7});
+		total = __builtin_shufflevector(v, v, 7, 7, 7, 7, 7, 7, 7, 7);
 	}
 	for (uint32_t running = prefix[x]; x < n; x++) prefix[x + 1] = running += static_cast<uint32_t>(columns[x]);
 }
@@ -84,11 +85,11 @@ LVF_VECTOR_CLONES void prefixSums64(const int32_t* __restrict columns, int n, in
 		I32x4 narrow;
 		std::memcpy(&narrow, columns + x, sizeof narrow);
 		I64x4 v = __builtin_convertvector(narrow, I64x4);
-		v += __builtin_shuffle(v, zero, I64x4{4, 0, 1, 2});
-		v += __builtin_shuffle(v, zero, I64x4{4, 4, 0, 1});
+		v += __builtin_shufflevector(v, zero, 4, 0, 1, 2);
+		v += __builtin_shufflevector(v, zero, 4, 4, 0, 1);
 		v += total;
 		std::memcpy(prefix + x + 1, &v, sizeof v);
-		total = __builtin_shuffle(v, I64x4{3, 3, 3, 3});
+		total = __builtin_shufflevector(v, v, 3, 3, 3, 3);
 	}
 	for (int64_t running = prefix[x]; x < n; x++) prefix[x + 1] = running += columns[x];
 }
@@ -105,7 +106,7 @@ GridWindowSums::GridWindowSums(
 	for (int q = 0; q < kQuantities; q++)
 	{
 		m_columns[q].assign(static_cast<size_t>(left.cols), 0);
-		m_prefix[q].assign(static_cast<size_t>(left.cols) + 1, 0);
+		if (q != WW) m_prefix[q].assign(static_cast<size_t>(left.cols) + 1, 0);
 	}
 	m_prefixWW.assign(static_cast<size_t>(left.cols) + 1, 0);
 }

@@ -58,7 +58,7 @@ class GridWindowSums
 	 * windows up to kMaxWindow (L W: 31^2 x 255 x 8160 < 2^31), so the
 	 * difference of two gives it exactly; W^2's in 64 bits (m_prefixWW). */
 	std::vector<int32_t> m_columns[kQuantities];
-	std::vector<uint32_t> m_prefix[kQuantities];
+	std::vector<uint32_t> m_prefix[kQuantities];	 // (W^2's left empty)
 	std::vector<int64_t> m_prefixWW;
 };
 

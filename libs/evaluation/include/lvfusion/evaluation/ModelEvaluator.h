@@ -42,7 +42,6 @@ struct PixelGrid
 	/** The grid row (or column) of image row (or column) `coordinate`,
 	 * which must lie on the grid. */
 	int index(int coordinate) const { return (coordinate - first) / stride; }
-	bool contains(int coordinate) const { return coordinate >= first && (coordinate - first) % stride == 0; }
 };
 
 struct ModelEvaluation
