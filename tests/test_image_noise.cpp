@@ -6,8 +6,10 @@
 #include <lvfusion/evaluation/ImageNoise.h>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 namespace
 {
@@ -47,4 +49,26 @@ TEST(ImageNoise, TextureWithoutNoiseIsNotNoise)
 	// Shading and edges alone: well under one grey level.
 	EXPECT_LT(lvf::evaluation::estimateNoiseStd(texturedImage(0.0, 7)), 0.5);
 	EXPECT_EQ(lvf::evaluation::estimateNoiseStd(cv::Mat1b(100, 100, uint8_t(90))), 0.0);
+}
+
+TEST(ImageNoise, IsTheMedianOfOpenCvsFilterOnTheRowsItReads)
+{
+	// The estimator filters only the rows it reads, by hand: on those its
+	// responses must be filter2D's with the 3x3 kernel, so the estimate is
+	// 1.4826 / 6 times their median absolute value (the lower median).
+	const cv::Mat1f kernel = (cv::Mat1f(3, 3) << 1, -2, 1, -2, 4, -2, 1, -2, 1);
+	cv::Mat1b odd = texturedImage(3.0, 11)(cv::Rect(3, 2, 601, 377)).clone();
+	for (const cv::Mat1b& image : {texturedImage(2.0, 5), odd})
+		for (const int rowStep : {1, 4, 7})
+		{
+			cv::Mat1s response;
+			cv::filter2D(image, response, CV_16S, kernel);
+			std::vector<int> magnitudes;
+			for (int v = 1; v < image.rows - 1; v += rowStep)
+				for (int u = 1; u < image.cols - 1; u++) magnitudes.push_back(std::abs(response(v, u)));
+			const size_t lowerMedian = (magnitudes.size() + 1) / 2 - 1;
+			std::nth_element(magnitudes.begin(), magnitudes.begin() + lowerMedian, magnitudes.end());
+			EXPECT_DOUBLE_EQ(lvf::evaluation::estimateNoiseStd(image, rowStep), 1.4826 * magnitudes[lowerMedian] / 6.0)
+				<< image.cols << "x" << image.rows << ", every " << rowStep << " rows";
+		}
 }
