@@ -28,6 +28,27 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
  * (the model's surfaces are exact planes: only rounding separates them). */
 constexpr double kOnTheFloor = 1e-3;
 
+/** Whether the model check leaves a pixel in this state to the search. */
+bool leftToTheSearch(PixelState state) { return state == PixelState::Inconsistent || state == PixelState::Unmodelled; }
+
+/** Per image row, whether the search's grid (rows and columns half,
+ * half + stride, ...) has a pixel there that it will match: left to it and
+ * textured. Most frames leave a third of the grid's rows without one (rooms
+ * 301-310), and the levels' statistics are needed only on the others. */
+std::vector<uint8_t> gridRowsToSearch(const lvf::evaluation::ModelEvaluation& evaluation, int half, int stride, double textureGate)
+{
+	const int H = evaluation.state.rows, W = evaluation.state.cols;
+	std::vector<uint8_t> wanted(static_cast<size_t>(H), 0);
+	for (int v = half; v < H - half; v += stride)
+	{
+		const int gridRow = evaluation.grid.index(v);
+		for (int u = half; u < W - half && !wanted[static_cast<size_t>(v)]; u += stride)
+			wanted[static_cast<size_t>(v)] = leftToTheSearch(static_cast<PixelState>(evaluation.state(v, u))) &&
+				evaluation.gridLeftStd(gridRow, evaluation.grid.index(u)) >= textureGate;
+	}
+	return wanted;
+}
+
 /** Two passes' points, each in row order, as one list in row order. */
 std::vector<VisualPoint> mergedByRow(const std::vector<VisualPoint>& a, const std::vector<VisualPoint>& b)
 {
@@ -131,8 +152,7 @@ void FocusedEpipolarSearch::searchRows(
 	for (int v = firstRow; v < endRow; v += pass.rowStep)
 		for (int u = half; u < W - half; u += stride)
 		{
-			const auto state = static_cast<PixelState>(evaluation.state(v, u));
-			if (state != PixelState::Inconsistent && state != PixelState::Unmodelled) continue;
+			if (!leftToTheSearch(static_cast<PixelState>(evaluation.state(v, u)))) continue;
 			auto mark = [&](SearchOutcome o, size_t& counter) {
 				outcome(v, u) = static_cast<uint8_t>(o);
 				counter++;
@@ -265,15 +285,22 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	Result out;
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
-	// Pixels are matched only on the grid's rows: statistics there alone.
-	MatchingLevel full(left, right, half, RowGrid{half, m_options.pixelStride});
+	const double textureGate = m_options.textureGate(evaluation.noiseStd);
+	// Pixels are matched only on the grid's rows that hold one to search,
+	// and on the coarse level's rows under them: statistics there alone.
+	std::vector<uint8_t> rowsToSearch = gridRowsToSearch(evaluation, half, m_options.pixelStride, textureGate);
+	std::vector<uint8_t> coarseRows(static_cast<size_t>(H / 2 + 1), 0);
+	for (int v = 0; v < H; v++)
+		if (rowsToSearch[static_cast<size_t>(v)]) coarseRows[static_cast<size_t>(v / 2)] = 1;
+	MatchingLevel full(left, right, half, RowGrid{half, m_options.pixelStride, std::move(rowsToSearch)});
 	std::unique_ptr<MatchingLevel> coarse;
-	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
+	if (m_options.coarseToFine)
+		coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2), std::move(coarseRows));
 	// Every coarse-to-fine match reads the coarse left window's statistics.
 	if (coarse) coarse->prepareLeftStatistics();
 	out.outcome = cv::Mat1b::zeros(H, W);
 	const SubpixelRefinement refinement(half, m_options.subpixelSigma);
-	const Frame frame{evaluation, g, band, floorHeight, half, m_options.textureGate(evaluation.noiseStd), refinement};
+	const Frame frame{evaluation, g, band, floorHeight, half, textureGate, refinement};
 
 	// Coarse rows first (nearest_first_levels = L): every 2^L-th grid row,
 	// then the rows halfway between, and so on down to every grid row; a

@@ -32,7 +32,7 @@ struct MatchingLevel::Images
 {
 	Images(cv::Mat1f l, cv::Mat1f r, int h, RowGrid grid)
 		: half(h), left(std::move(l)), right(std::move(r)), leftPairs(neighbourPairs(left)),
-		  rightPairs(neighbourPairs(right)), rows(grid)
+		  rightPairs(neighbourPairs(right)), rows(std::move(grid))
 	{
 		windowStatistics(right, half, rows, rightMean, rightStd);
 	}
@@ -72,14 +72,15 @@ MatchingLevel::MatchingLevel(std::shared_ptr<Images> images)
 }
 
 MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid rows)
-	: MatchingLevel(std::make_shared<Images>(asFloat(l), asFloat(r), h, rows))
+	: MatchingLevel(std::make_shared<Images>(asFloat(l), asFloat(r), h, std::move(rows)))
 {
 }
 
-MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
-	// Every row where a window fits (only those are matched from): the
-	// same values, and on a 320x240 level faster than OpenCV's filters.
-	: MatchingLevel(std::make_shared<Images>(pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1}))
+MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h, std::vector<uint8_t> wantedRows)
+	// Every (wanted) row where a window fits, only those are matched from:
+	// the same values, and on a 320x240 level faster than OpenCV's filters.
+	: MatchingLevel(std::make_shared<Images>(
+		  pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1, std::move(wantedRows)}))
 {
 }
 

@@ -73,7 +73,7 @@ LVF_VECTOR_CLONES void meansAndVariances(const float* __restrict sums, const flo
 }
 }  // namespace
 
-void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f& mean, cv::Mat1f& deviation)
+void windowStatistics(const cv::Mat1f& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation)
 {
 	const int width = image.cols, side = 2 * half + 1;
 	// Whole grey levels: every column and window sum (of values and of
@@ -100,8 +100,9 @@ void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f&
 		int previous = -1;
 		for (int v = firstRow; v < endRow; v += rows.step)
 		{
+			if (!rows.isWanted(v)) continue;
 			// The column sums over rows v - half .. v + half, slid down from
-			// the previous grid row's where the windows overlap (exact
+			// the previous wanted row's where the windows overlap (exact
 			// integers: the order of the additions does not matter).
 			lvf::common::slideWindowRows(previous, v, half, clear, addRow);
 			previous = v;

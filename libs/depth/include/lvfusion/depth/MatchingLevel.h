@@ -17,7 +17,9 @@
 #include <lvfusion/depth/WindowStatistics.h>
 #include <opencv2/core.hpp>
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace lvf::depth
 {
@@ -33,8 +35,10 @@ class MatchingLevel
 	 * fits), the only ones this level will be asked to match from. */
 	MatchingLevel(const cv::Mat1b& left, const cv::Mat1b& right, int half, RowGrid rows = {});
 	/** The same pair at half resolution (Gaussian pyramid), windows of half
-	 * the side: a window there covers about the same scene. */
-	MatchingLevel(const MatchingLevel& finer, int half);
+	 * the side: a window there covers about the same scene. Statistics on
+	 * every row where a window fits, or on those of them `wantedRows` flags
+	 * (one flag per row of this level). */
+	MatchingLevel(const MatchingLevel& finer, int half, std::vector<uint8_t> wantedRows = {});
 	MatchingLevel(const MatchingLevel&) = delete;
 	MatchingLevel& operator=(const MatchingLevel&) = delete;
 	~MatchingLevel();

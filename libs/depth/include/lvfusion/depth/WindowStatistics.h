@@ -4,13 +4,19 @@
 
 #include <opencv2/core.hpp>
 
+#include <cstdint>
+#include <vector>
+
 namespace lvf::depth
 {
-/** Rows first, first + step, first + 2 step, ... of an image. */
+/** Rows first, first + step, first + 2 step, ... of an image; with
+ * `wanted` (one flag per image row), only those of them it flags. */
 struct RowGrid
 {
 	int first = 0, step = 1;
-	bool all() const { return first == 0 && step == 1; }
+	std::vector<uint8_t> wanted;
+	bool all() const { return first == 0 && step == 1 && wanted.empty(); }
+	bool isWanted(int v) const { return wanted.empty() || wanted[static_cast<size_t>(v)]; }
 };
 
 /** Window mean and deviation at every pixel of `image` (box filters, border
@@ -26,6 +32,6 @@ struct RowGrid
  * of the rows at the default stride (0.90 -> 0.43 ms per 640x480 frame),
  * and the half resolution's where a window fits (0.67 -> 0.52 ms for both
  * images: OpenCV's six whole-image passes cost more at 320x240). */
-void windowStatistics(const cv::Mat1f& image, int half, RowGrid rows, cv::Mat1f& mean, cv::Mat1f& deviation);
+void windowStatistics(const cv::Mat1f& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation);
 
 }  // namespace lvf::depth
