@@ -130,7 +130,7 @@ TEST(CrossTerms, EqualTheWindowSumsOfProductsOnEveryPath)
 	cv::Mat1f left, right;
 	leftGrey.convertTo(left, CV_32F);
 	rightGrey.convertTo(right, CV_32F);
-	const cv::Mat1i leftPairs = depth::neighbourPairs(left), rightPairs = depth::neighbourPairs(right);
+	const cv::Mat1i leftPairs = depth::neighbourPairs(leftGrey), rightPairs = depth::neighbourPairs(rightGrey);
 	size_t compared = 0;
 	for (int half = 1; half <= 9; half++)
 		for (int v = half; v < left.rows - half; v += 7)

@@ -13,19 +13,19 @@ namespace lvf::depth
 namespace
 {
 /** One row's pair words, cloned for AVX2 (eight at a time). */
-LVF_VECTOR_CLONES void pairRow(const float* in, int width, int32_t* out)
+LVF_VECTOR_CLONES void pairRow(const uint8_t* in, int width, int32_t* out)
 {
 	const int last = width - 1;
-	for (int x = 0; x < last; x++) out[x] = static_cast<int32_t>(in[x]) | (static_cast<int32_t>(in[x + 1]) << 16);
-	out[last] = static_cast<int32_t>(in[last]);
+	for (int x = 0; x < last; x++) out[x] = int32_t{in[x]} | (int32_t{in[x + 1]} << 16);
+	out[last] = int32_t{in[last]};
 }
 }  // namespace
 
-cv::Mat1i neighbourPairs(const cv::Mat1f& image)
+cv::Mat1i neighbourPairs(const cv::Mat1b& image)
 {
 	cv::Mat1i pairs(image.rows, image.cols);
 	lvf::common::forEachRow(
-		image.rows, [&](int v) { pairRow(image.ptr<float>(v), image.cols, pairs.ptr<int32_t>(v)); });
+		image.rows, [&](int v) { pairRow(image.ptr<uint8_t>(v), image.cols, pairs.ptr<int32_t>(v)); });
 	return pairs;
 }
 

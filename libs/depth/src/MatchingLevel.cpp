@@ -18,21 +18,23 @@ cv::Mat1f asFloat(const cv::Mat1b& image)
 /** Half resolution, rounded to whole grey levels: the cross terms multiply
  * 16-bit integers (CrossTerms.h), and the window statistics' sums are
  * integers, exact in float whatever the order of their additions. */
-cv::Mat1f pyramidDown(const cv::Mat1f& image)
+cv::Mat1b pyramidDown(const cv::Mat1f& image)
 {
 	cv::Mat1f smoothed;
 	cv::pyrDown(image, smoothed);
 	cv::Mat1b grey;
 	smoothed.convertTo(grey, CV_8U);
-	return asFloat(grey);
+	return grey;
 }
 }  // namespace
 
 struct MatchingLevel::Images
 {
-	Images(cv::Mat1f l, cv::Mat1f r, int h, RowGrid grid)
-		: half(h), left(std::move(l)), right(std::move(r)), leftPairs(neighbourPairs(left)),
-		  rightPairs(neighbourPairs(right)), rows(std::move(grid))
+	/** The neighbour pairs from the grey images: a quarter of the float
+	 * ones' bytes to read. */
+	Images(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid grid)
+		: half(h), left(asFloat(l)), right(asFloat(r)), leftPairs(neighbourPairs(l)),
+		  rightPairs(neighbourPairs(r)), rows(std::move(grid))
 	{
 		windowStatistics(right, half, rows, rightMean, rightStd);
 	}
@@ -72,7 +74,7 @@ MatchingLevel::MatchingLevel(std::shared_ptr<Images> images)
 }
 
 MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid rows)
-	: MatchingLevel(std::make_shared<Images>(asFloat(l), asFloat(r), h, std::move(rows)))
+	: MatchingLevel(std::make_shared<Images>(l, r, h, std::move(rows)))
 {
 }
 

@@ -24,7 +24,7 @@ namespace lvf::depth
 /** Each pixel of a whole-grey-level image with its right neighbour: word
  * (v, x) holds image(v, x) in its low 16 bits and image(v, x + 1) in its
  * high ones (0 past the last column). */
-cv::Mat1i neighbourPairs(const cv::Mat1f& image);
+cv::Mat1i neighbourPairs(const cv::Mat1b& image);
 
 /** The grey level of a neighbour-pair word's own pixel. */
 inline int32_t pixelOf(int32_t pair) { return pair & 0xFFFF; }
