@@ -127,10 +127,8 @@ TEST(CrossTerms, EqualTheWindowSumsOfProductsOnEveryPath)
 	rng.fill(rightGrey, cv::RNG::UNIFORM, 0, 256);
 	leftGrey(cv::Rect(0, 0, 90, 4)).setTo(255);
 	rightGrey(cv::Rect(0, 0, 90, 4)).setTo(255);
-	cv::Mat1f left, right;
-	leftGrey.convertTo(left, CV_32F);
-	rightGrey.convertTo(right, CV_32F);
-	const cv::Mat1i leftPairs = depth::neighbourPairs(leftGrey), rightPairs = depth::neighbourPairs(rightGrey);
+	const cv::Mat1b &left = leftGrey, &right = rightGrey;
+	const cv::Mat1i leftPairs = depth::neighbourPairs(left), rightPairs = depth::neighbourPairs(right);
 	size_t compared = 0;
 	for (int half = 1; half <= 9; half++)
 		for (int v = half; v < left.rows - half; v += 7)
@@ -147,7 +145,7 @@ TEST(CrossTerms, EqualTheWindowSumsOfProductsOnEveryPath)
 						int64_t expected = 0;
 						for (int dy = -half; dy <= half; dy++)
 							for (int dx = -half; dx <= half; dx++)
-								expected += int64_t(leftGrey(v + dy, u + dx)) * rightGrey(v + dy, x0 + i + dx);
+								expected += int64_t(left(v + dy, u + dx)) * right(v + dy, x0 + i + dx);
 						ASSERT_EQ(fast[size_t(i)], expected) << "half " << half << " at (" << u << ", " << v << ") column " << x0 + i;
 						ASSERT_EQ(plain[size_t(i)], expected) << "half " << half << " at (" << u << ", " << v << ") column " << x0 + i;
 					}

@@ -287,16 +287,13 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	const int half = windowSize / 2;
 	const int W = left.cols, H = left.rows;
 	const double textureGate = m_options.textureGate(evaluation.noiseStd);
-	// Pixels are matched only on the grid's rows that hold one to search,
-	// and on the coarse level's rows under them: statistics there alone.
-	std::vector<uint8_t> rowsToSearch = gridRowsToSearch(evaluation, half, m_options.pixelStride, textureGate);
-	std::vector<uint8_t> coarseRows(static_cast<size_t>(H / 2 + 1), 0);
-	for (int v = 0; v < H; v++)
-		if (rowsToSearch[static_cast<size_t>(v)]) coarseRows[static_cast<size_t>(v / 2)] = 1;
-	MatchingLevel full(left, right, half, RowGrid{half, m_options.pixelStride, std::move(rowsToSearch)});
+	// Pixels are matched only on the grid's rows that hold one to search
+	// (and, coarse to fine, on the coarse level's rows under them):
+	// statistics there alone.
+	MatchingLevel full(left, right, half,
+		RowGrid{half, m_options.pixelStride, gridRowsToSearch(evaluation, half, m_options.pixelStride, textureGate)});
 	std::unique_ptr<MatchingLevel> coarse;
-	if (m_options.coarseToFine)
-		coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2), std::move(coarseRows));
+	if (m_options.coarseToFine) coarse = std::make_unique<MatchingLevel>(full, std::max(1, half / 2));
 	// Every coarse-to-fine match reads the coarse left window's statistics.
 	if (coarse) coarse->prepareLeftStatistics();
 	out.outcome = cv::Mat1b::zeros(H, W);

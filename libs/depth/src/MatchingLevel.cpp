@@ -2,7 +2,9 @@
 #include <lvfusion/depth/MatchingLevel.h>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <mutex>
+#include <vector>
 
 namespace lvf::depth
 {
@@ -78,11 +80,26 @@ MatchingLevel::MatchingLevel(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowG
 {
 }
 
-MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h, std::vector<uint8_t> wantedRows)
-	// Every (wanted) row where a window fits, only those are matched from:
+namespace
+{
+/** The half-resolution rows under a finer level's rows: coarse row v / 2
+ * for each of its grid rows it computes statistics on (every row where a
+ * window fits when the finer level has them all). */
+RowGrid rowsUnder(const RowGrid& finer, int finerRows, int half)
+{
+	if (finer.all()) return RowGrid{half, 1, {}};
+	std::vector<uint8_t> wanted(static_cast<size_t>((finerRows + 1) / 2), 0);  // cv::pyrDown's rows
+	for (int v = std::max(finer.first, 0); v < finerRows; v += finer.step)
+		if (finer.isWanted(v)) wanted[static_cast<size_t>(v / 2)] = 1;
+	return RowGrid{half, 1, std::move(wanted)};
+}
+}  // namespace
+
+MatchingLevel::MatchingLevel(const MatchingLevel& finer, int h)
+	// Only the rows under the finer level's (only those are matched from):
 	// the same values, and on a 320x240 level faster than OpenCV's filters.
-	: MatchingLevel(std::make_shared<Images>(
-		  pyramidDown(finer.left), pyramidDown(finer.right), h, RowGrid{h, 1, std::move(wantedRows)}))
+	: MatchingLevel(std::make_shared<Images>(pyramidDown(finer.left), pyramidDown(finer.right), h,
+		  rowsUnder(finer.m_images->rows, finer.left.rows, h)))
 {
 }
 

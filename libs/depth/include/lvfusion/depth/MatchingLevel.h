@@ -17,9 +17,7 @@
 #include <lvfusion/depth/WindowStatistics.h>
 #include <opencv2/core.hpp>
 
-#include <cstdint>
 #include <memory>
-#include <vector>
 
 namespace lvf::depth
 {
@@ -36,9 +34,9 @@ class MatchingLevel
 	MatchingLevel(const cv::Mat1b& left, const cv::Mat1b& right, int half, RowGrid rows = {});
 	/** The same pair at half resolution (Gaussian pyramid), windows of half
 	 * the side: a window there covers about the same scene. Statistics on
-	 * every row where a window fits, or on those of them `wantedRows` flags
-	 * (one flag per row of this level). */
-	MatchingLevel(const MatchingLevel& finer, int half, std::vector<uint8_t> wantedRows = {});
+	 * the rows under the finer level's statistics rows (row v / 2 for its
+	 * row v), where a window fits. */
+	MatchingLevel(const MatchingLevel& finer, int half);
 	MatchingLevel(const MatchingLevel&) = delete;
 	MatchingLevel& operator=(const MatchingLevel&) = delete;
 	~MatchingLevel();
