@@ -104,6 +104,36 @@ TEST_F(LvfFuseCli, FusesTheSampleIntoFilesMrptToolsOpen)
 	EXPECT_EQ(r.out.find(": frame 0: "), std::string::npos) << r.out;
 }
 
+TEST_F(LvfFuseCli, TheBearingsFileAddsUpToEachFramesFigures)
+{
+	// The summary and the frames CSV count the in-view bearings up to z_max
+	// only (the "over in-view bearings up to Zmax"); the bearings
+	// CSV's counted_* columns say which, so that its rows add up to them.
+	const auto r = fuse("--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog --outdir out -q");
+	ASSERT_EQ(r.status, 0) << r.err;
+	const auto frames = readCsv(m_dir / "out/box_room_frames.csv");
+	std::map<std::string, size_t> counted, hidden, recalled;
+	size_t inViewBeyond = 0;
+	for (const auto& b : readCsv(m_dir / "out/box_room_bearings.csv"))
+	{
+		counted[b.at("frame")] += b.at("counted_in_view") == "1";
+		hidden[b.at("frame")] += b.at("counted_hidden") == "1";
+		recalled[b.at("frame")] += b.at("recalled") == "1";
+		inViewBeyond += b.at("in_view") == "1" && b.at("counted_in_view") == "0";
+		if (b.at("counted_hidden") == "1") EXPECT_EQ(b.at("hidden"), "1");
+	}
+	ASSERT_EQ(frames.size(), 8u);
+	for (const auto& f : frames)
+	{
+		const std::string k = f.at("frame");
+		EXPECT_EQ(std::to_string(counted[k]), f.at("in_view")) << "frame " << k;
+		EXPECT_EQ(std::to_string(hidden[k]), f.at("hidden")) << "frame " << k;
+		if (hidden[k] > 0)
+			EXPECT_NEAR(double(recalled[k]) / double(hidden[k]), std::stod(f.at("recall")), 1e-4) << "frame " << k;
+	}
+	EXPECT_GT(inViewBeyond, 0u) << "the box room has in-view bearings beyond z_max: the columns differ there";
+}
+
 TEST_F(LvfFuseCli, EvaluationPicturesCanBeThinnedOut)
 {
 	// A long log's output need not carry a picture per frame.
@@ -181,6 +211,12 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 	const auto misplacedKey = write("place.ini", "[CLaserStereoFusion]\nz_max = 4\n");
 	const auto badValue = write("value.ini", "[ModelEvaluator]\nwindow_size = 8\n");
 	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog";
+	const auto noTruth = write("hello.csv", "hello world\n");
+	const auto otherTruth = write("other_truth_scans.csv", "frame,timestamp,b0.00\n0,12345.0,1.5\n");
+	fs::create_directories(m_dir / "mydata");
+	const auto precious = write("mydata/precious.txt", "the user's\n");
+	const auto input = m_dir / "input.rawlog";
+	fs::copy_file(sample, input);
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input /nonexistent.rawlog", "/nonexistent.rawlog: input rawlog not found"},
 		{"--input " + notRawlog.string(), "notes.rawlog: record 0: not an MRPT object: corrupt, truncated or not a rawlog"},
@@ -197,6 +233,11 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --config .", ".: configuration file is a folder, not a file"},
 		{"--input " + sample + " --truth .", ".: truth scan file is a folder, not a file"},
 		{"--input " + sample + " --truth /nonexistent.csv", "/nonexistent.csv: truth scan file not found"},
+		{"--input " + sample + " --truth " + noTruth.string(), "hello.csv: holds no truth scans"},
+		{"--input " + sample + " --truth " + otherTruth.string(), "other_truth_scans.csv: a truth scan (its time stamp and bearings) for 0 of the"},
+		{"--input " + sample + " --output mydata", "--output: names a folder, not a file (e.g. mydata/out.rawlog)"},
+		{"--input " + input.string() + " --output " + input.string(), "--output: is the input rawlog"},
+		{"--input " + sample + " -q -v", "--verbose: contradicts --quiet"},
 	};
 	for (const auto& [args, expected] : cases)
 	{
@@ -207,6 +248,13 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
 		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
 	}
+	EXPECT_EQ(slurp(precious), "the user's\n");
+	EXPECT_EQ(slurp(input), slurp(sample));
+	// MRPT's tools write `-o OUT.rawlog`; lvf-fuse's -o is the output folder.
+	const auto r = fuse("--input " + sample + " -o fused.rawlog");
+	EXPECT_EQ(r.status, 2) << r.err;
+	EXPECT_NE(r.err.find("--outdir: 'fused.rawlog' is named like a rawlog"), std::string::npos) << r.err;
+	EXPECT_FALSE(fs::exists(m_dir / "fused.rawlog"));
 }
 
 TEST_F(LvfFuseCli, AnOutputPlaceThatCannotBeWrittenIsOneLineBeforeAnyWork)

@@ -376,6 +376,25 @@ TEST_F(LvfMap, AFilterThatLostTheRobotIsReported)
 	EXPECT_GT(e.medianPosition, 0.5);
 }
 
+TEST_F(LvfMap, APriorMapMostlyOccupiedIsWarnedOf)
+{
+	// A picture given as the prior map by mistake, dark all over: every
+	// return lies "on the map" wherever the particles go, so the lost-filter
+	// warning above cannot fire; the map itself is warned of.
+	simulateSmallRoom("dark_room");
+	cv::Mat1b dark(200, 200, uchar(20));
+	dark(cv::Rect(80, 80, 40, 40)) = 255;  // a little free space
+	cv::imwrite((m_dir / "photo.png").string(), dark);
+	const auto r = run(kMap, "--input dark_room.rawlog --map photo.png --outdir out -q");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.err.find("lvf-map: warning: photo.png: 96 % of the prior map is occupied"), std::string::npos) << r.err;
+	// A real map is not warned of.
+	ASSERT_EQ(run(kMap, "--input dark_room.rawlog --outdir own -q").status, 0);
+	const auto good = run(kMap, "--input dark_room.rawlog --map own/dark_room_prior_map.gridmap.gz --outdir out2 -q");
+	ASSERT_EQ(good.status, 0) << good.err;
+	EXPECT_EQ(good.err.find("of the prior map is occupied"), std::string::npos) << good.err;
+}
+
 TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
 {
 	const std::string pfLocalization = LVF_PF_LOCALIZATION;

@@ -9,6 +9,9 @@
 
 #include <lvfusion/metrics/PoseTrajectory.h>
 
+#include <csignal>
+#include <cstdlib>
+
 using lvf::test::CliTest;
 using lvf::test::RunResult;
 namespace fs = std::filesystem;
@@ -44,6 +47,8 @@ TEST_F(LvfNavigateCli, BadInputIsOneLineAndWritesNothing)
 	expectBadInput("--batch 0", "--batch");
 	expectBadInput("--threads -1", "--threads: must be >= 0");
 	expectBadInput("--batch 2 --room-kind attic", "--room-kind");
+	expectBadInput("--room-kind visible", "--room-kind: only for random rooms");  // the box room would run
+	expectBadInput("-r 3 --room-kind overhangs,visible", "--room-kind: a single run takes one room kind");
 	const auto bad = write("bad.ini", "[NavigationLoop]\ncontrol_period = 0.1\nno_such_key = 1\n");
 	expectBadInput("--config '" + bad.string() + "'", "no_such_key");
 	// MRPT's navigator reads this section itself: checked before it does.
@@ -71,6 +76,44 @@ TEST_F(LvfNavigateCli, ScenariosThatCannotRunAreReported)
 		EXPECT_NE(r.out.find(c.outcome), std::string::npos) << r.out;
 		EXPECT_NE(r.out.find("reached=0"), std::string::npos) << r.out;
 		EXPECT_TRUE(fs::exists(m_dir / "out" / "box_room_metrics.txt"));
+		// Nothing was sensed: no empty rawlog, no empty navigation log.
+		EXPECT_FALSE(fs::exists(m_dir / "out" / "box_room_run.rawlog")) << c.args;
+		EXPECT_FALSE(fs::exists(m_dir / "out" / "box_room_navlog")) << c.args;
+		fs::remove_all(m_dir / "out");
+	}
+}
+
+TEST_F(LvfNavigateCli, AnInterruptedRunLeavesNothingBehind)
+{
+	// Ctrl-C or `kill` in the middle of a run: the process ends by that
+	// signal, and neither its hidden staging folder nor its scratch folder
+	// (under TMPDIR) stays.
+	const fs::path scratch = m_dir / "tmp";
+	fs::create_directories(scratch);
+	for (const int signal : {SIGINT, SIGTERM})
+	{
+		const pid_t child = fork();
+		ASSERT_GE(child, 0);
+		if (child == 0)
+		{
+			setenv("TMPDIR", scratch.c_str(), 1);
+			if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(127);
+			const std::string out = (m_dir / "out").string();
+			execl(LVF_NAVIGATE_BIN, LVF_NAVIGATE_BIN, "-q", "--threads", "1", "-o", out.c_str(), static_cast<char*>(nullptr));
+			_exit(127);
+		}
+		// Wait for the run's staging folder (".out.partial-PID" beside "out").
+		const fs::path staging = m_dir / (".out.partial-" + std::to_string(child));
+		for (int i = 0; i < 600 && !fs::exists(staging / "box_room_navlog"); i++) usleep(50000);
+		ASSERT_TRUE(fs::exists(staging)) << "the run never started";
+		usleep(300000);	 // well into the run
+		kill(child, signal);
+		int status = 0;
+		ASSERT_EQ(waitpid(child, &status, 0), child);
+		EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
+		EXPECT_FALSE(fs::exists(staging)) << staging;
+		EXPECT_FALSE(fs::exists(m_dir / "out"));
+		EXPECT_TRUE(fs::is_empty(scratch)) << (fs::directory_iterator(scratch)->path());
 	}
 }
 

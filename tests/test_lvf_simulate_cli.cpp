@@ -104,6 +104,8 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 	const auto noEquals = write("noeq.ini", "[SimulatedLaser]\n; range\nmax_range 8\n");
 	const auto noSection = write("nosec.ini", "max_range = 8\n");
 	const auto badHeader = write("header.ini", "[SimulatedLaser\nmax_range = 8\n");
+	const auto twice = write("twice.ini", "[SimulatedLaser]\nmax_range = 8\n\nmax_range = 9\n");
+	const auto escaping = write("escape.yaml", "name: ../escape\nboxes: []\npath: {poses: [[0,0,0]]}\n");
 
 	const std::vector<std::tuple<std::string, std::string>> cases{
 		{"--world /nonexistent.yaml", "/nonexistent.yaml: world file not found"},
@@ -123,6 +125,12 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 		{"--random-world -1", "--random-world: must be >= 0"},
 		{"--world " + goodWorld + " --random-world 2", "--random-world: give either --world or --random-world"},
 		{"--no-such-flag", "command line"},
+		{"--world " + goodWorld + " --config " + twice.string(), "twice.ini: line 4: [SimulatedLaser] max_range: given twice (first on line 2)"},
+		{"--world " + goodWorld + " --seed -5", "--seed: must be >= 0"},
+		// Names become file names in the output folder: nothing outside it.
+		{"--world " + goodWorld + " --name ../escape", "--name: '../escape' must be a plain file name"},
+		{"--world " + goodWorld + " --name a/b", "--name: 'a/b' must be a plain file name"},
+		{"--world " + escaping.string(), "escape.yaml: line 1: name: '../escape' must be a plain file name"},
 	};
 	for (const auto& [args, expected] : cases)
 	{
@@ -133,4 +141,9 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 		EXPECT_EQ(r.err.rfind("lvf-simulate: error: ", 0), 0u) << r.err;
 		EXPECT_FALSE(fs::exists(m_dir / "out")) << args;
 	}
+	// MRPT's tools write `-o OUT.rawlog`; here -o is the output folder.
+	const auto r = simulate("--world " + goodWorld + " --outdir sim.rawlog");
+	EXPECT_EQ(r.status, 2) << r.err;
+	EXPECT_NE(r.err.find("--outdir: 'sim.rawlog' is named like a rawlog"), std::string::npos) << r.err;
+	EXPECT_FALSE(fs::exists(m_dir / "sim.rawlog"));
 }

@@ -444,6 +444,7 @@ TEST_F(MiddleburyImport, EveryBadSceneOrOptionIsOneLineExitTwoAndNothingWritten)
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--scene " + (m_dir / "NoSuchScene").string(), "NoSuchScene: scene folder not found"},
 		{"--scene " + noMask.string(), "NoMask/mask0nocc.png: file not found"},
+		{"--scene " + (kScenes / "Motorcycle" / "calib.txt").string(), "calib.txt: is a file, not a scene folder"},
 		{"--scene " + noBaseline.string(), "NoBaseline/calib.txt: baseline: missing field"},
 		{"--scene " + badDoffs.string(), "BadDoffs/calib.txt: line 12: doffs: '3x' is not a number"},
 		{"--scene " + badCam.string(), "BadCam/calib.txt: line 12: cam1: '[ 999.421 0 326.96 ; 0 999.421 252.932 ]' is not a 3x3 matrix (6 numbers)"},
@@ -452,6 +453,7 @@ TEST_F(MiddleburyImport, EveryBadSceneOrOptionIsOneLineExitTwoAndNothingWritten)
 		 "Truncated/disp0GT.pfm: pixel data: 99979 of 1473108 bytes (741x497 floats): file truncated"},
 		{"--scene " + colourPfm.string(), "ColourPfm/disp0GT.pfm: header: type: colour PFM (PF), expected one channel (Pf)"},
 		{good + " --laser-height 0", "--laser-height: must be > 0"},
+		{good + " --laser-height 5", "--laser-height: must be below --robot-height"},
 		{good + " --robot-height 0.01", "--robot-height: must be above --obstacle-min-height"},
 		{good + " --max-range -1", "--max-range: must be > 0"},
 		{good + " --resolution-deg 0", "--resolution-deg: must be in (0, 10]"},
@@ -469,7 +471,11 @@ TEST_F(MiddleburyImport, EveryBadSceneOrOptionIsOneLineExitTwoAndNothingWritten)
 	}
 	const auto noOut = import(good);
 	EXPECT_EQ(noOut.status, 2);
-	EXPECT_NE(noOut.err.find("command line: missing required argument(s) --out (see --help)"), std::string::npos) << noOut.err;
+	EXPECT_NE(noOut.err.find("command line: missing required argument(s) --out or --outdir (see --help)"), std::string::npos) << noOut.err;
+	// --outdir, as the other programs name it, does the same as --out.
+	const auto viaOutdir = import(good + " --outdir other -q");
+	EXPECT_EQ(viaOutdir.status, 0) << viaOutdir.err;
+	EXPECT_TRUE(fs::exists(m_dir / "other" / "Motorcycle.rawlog"));
 }
 
 /** "recall 0.348 of 23 hidden bearings, phantom rate 0.1310 of 84 in view" */

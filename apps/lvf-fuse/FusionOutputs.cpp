@@ -55,7 +55,8 @@ FusionOutputs::FusionOutputs(
 			 "t_evaluate_ms,t_search_ms,t_fuse_ms,t_total_ms,in_view,hidden,recall,phantom_rate,"
 			 "hidden_range_error_m,seen_hidden,seen_recall\n";
 	m_bearingsCsv.open(files.stage(name + "_bearings.csv"));
-	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged,seen_truth_m\n";
+	m_bearingsCsv << "frame,ray,bearing_deg,laser_m,visual_m,fused_m,truth_m,in_view,hidden,bridged,seen_truth_m,"
+					 "counted_in_view,counted_hidden,recalled,phantom\n";
 	if (writePoints)
 	{
 		m_pointsCsv.open(files.stage(name + "_points.csv"));
@@ -92,7 +93,15 @@ void FusionOutputs::addBearings(
 		else
 			m_bearingsCsv << ",,";
 		m_bearingsCsv << ',' << int(i < r.bridged.size() && r.bridged[i]) << ','
-					  << (truth && !truth->seenRanges.empty() ? rangeField(truth->seenRanges[i]) : std::string()) << '\n';
+					  << (truth && !truth->seenRanges.empty() ? rangeField(truth->seenRanges[i]) : std::string()) << ',';
+		if (truth)
+		{
+			const auto& v = truth->verdicts[i];
+			m_bearingsCsv << int(v.scored) << ',' << int(v.hidden) << ',' << int(v.recalled) << ',' << int(v.phantom);
+		}
+		else
+			m_bearingsCsv << ",,,";
+		m_bearingsCsv << '\n';
 	}
 }
 

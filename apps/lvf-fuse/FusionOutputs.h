@@ -30,7 +30,9 @@ struct FrameTruth
 {
 	std::vector<float> ranges;	//!< per bearing [m], inf: nothing in the band
 	std::vector<float> seenRanges;	//!< the same of what both cameras see; empty: not known
-	std::vector<bool> inView, hidden;
+	std::vector<bool> inView, hidden;  //!< DESIGN.md's, at any range
+	/** How each bearing counts in `score` (up to Zmax). */
+	std::vector<lvf::metrics::BearingVerdict> verdicts;
 	lvf::metrics::FusionScore score;
 };
 

@@ -25,6 +25,7 @@ struct Stamped
 	double t;
 	mrpt::Clock::time_point stamp;
 	std::string label;
+	size_t rays = 0;  //!< a scan's
 };
 
 /** The observations of the chosen sensor (all of them if the log has only
@@ -67,7 +68,7 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 		const double t = mrpt::Clock::toDouble(o->timestamp);
 		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o);
 			s && s->sensorLabel != "FUSED")
-			allScans.push_back({at, t, o->timestamp, o->sensorLabel});
+			allScans.push_back({at, t, o->timestamp, o->sensorLabel, s->getScanSize()});
 		else if (std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o))
 			allStereos.push_back({at, t, o->timestamp, o->sensorLabel});
 		else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(o))
@@ -122,6 +123,8 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 		f.scanAt = s.at;
 		f.stereoAt = best->at;
 		f.stereoDelay = best->t - s.t;
+		f.scanTime = s.t;
+		f.scanBearings = s.rays;
 		f.odometry = odometry.latestNotAfter(s.stamp).value_or(poseAtEntry[s.at.entry]);
 		out.frames.push_back(f);
 	}

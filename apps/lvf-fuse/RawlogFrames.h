@@ -28,6 +28,8 @@ struct FusionFrame
 {
 	ObservationPlace scanAt, stereoAt;
 	double stereoDelay = 0;	 //!< stereo minus scan timestamp [s]
+	double scanTime = 0;  //!< the scan's time stamp [s]
+	size_t scanBearings = 0;  //!< and its number of rays
 	mrpt::poses::CPose2D odometry;	//!< robot pose by odometry at the scan
 	/** The objects, once the second pass has read them. */
 	mrpt::obs::CObservation2DRangeScan::Ptr scan;

@@ -1,8 +1,11 @@
 #include "TruthScoring.h"
 
+#include <lvfusion/common/InputError.h>
+#include <mrpt/core/format.h>
 #include <mrpt/system/filesystem.h>
 
 #include <filesystem>
+#include <iostream>
 
 namespace lvf::apps
 {
@@ -25,11 +28,16 @@ std::vector<lvf::metrics::TruthScan> readIfNamed(const std::string& path)
 	return path.empty() ? std::vector<lvf::metrics::TruthScan>{} : lvf::metrics::readTruthScans(path);
 }
 
-/** The truth scan of a frame's time stamp with the frame's bearings, if any. */
+/** The truth scan of a scan's time stamp with its number of bearings, if any. */
+const lvf::metrics::TruthScan* truthScanOf(
+	const std::vector<lvf::metrics::TruthScan>& truth, double scanTime, size_t bearings)
+{
+	const auto* t = lvf::metrics::findTruthScan(truth, scanTime);
+	return t && t->ranges.size() == bearings ? t : nullptr;
+}
 const lvf::metrics::TruthScan* truthScanOf(const std::vector<lvf::metrics::TruthScan>& truth, const FusionFrame& f)
 {
-	const auto* t = lvf::metrics::findTruthScan(truth, mrpt::Clock::toDouble(f.scan->timestamp));
-	return t && t->ranges.size() == f.scan->getScanSize() ? t : nullptr;
+	return truthScanOf(truth, mrpt::Clock::toDouble(f.scan->timestamp), f.scan->getScanSize());
 }
 }  // namespace
 
@@ -44,6 +52,22 @@ TruthFiles loadTruthFiles(const std::string& input, const std::string& given)
 	return t;
 }
 
+void checkTruthFitsFrames(const TruthFiles& truth, const RawlogFrames& in, bool given, const std::string& app)
+{
+	if (truth.path.empty()) return;
+	if (truth.scans.empty()) throw lvf::common::InputError(truth.path, "", "holds no truth scans");
+	size_t fitting = 0;
+	for (const auto& f : in.frames) fitting += truthScanOf(truth.scans, f.scanTime, f.scanBearings) != nullptr;
+	if (fitting == in.frames.size()) return;
+	const std::string what = mrpt::format(
+		"a truth scan (its time stamp and bearings) for %zu of the %zu frames to fuse (%zu truth scans of %zu "
+		"bearings; the log's scans have %zu)",
+		fitting, in.frames.size(), truth.scans.size(), truth.scans.empty() ? size_t(0) : truth.scans.front().ranges.size(),
+		in.frames.front().scanBearings);
+	if (given && fitting == 0) throw lvf::common::InputError(truth.path, "", what + ": the truth of another log?");
+	std::cerr << app << ": warning: " << truth.path << ": " << what << "; only those are scored" << std::endl;
+}
+
 std::optional<FrameTruth> scoreAgainstTruth(
 	const TruthFiles& truth, const FusionFrame& f, const lvf::fusion::CLaserStereoFusion::Result& r,
 	const lvf::fusion::CLaserStereoFusion::TOptions& options)
@@ -56,6 +80,7 @@ std::optional<FrameTruth> scoreAgainstTruth(
 	if (seen) ft.seenRanges = seen->ranges;
 	ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
 	ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
+	ft.verdicts = lvf::metrics::judgeBearings(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
 	ft.score = lvf::metrics::scoreFusedScan(
 		*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax, seen ? &seen->ranges : nullptr);
 	return ft;

@@ -26,6 +26,13 @@ struct TruthFiles
  * if it exists; the seen truth beside whichever it is, if it exists. */
 TruthFiles loadTruthFiles(const std::string& input, const std::string& given);
 
+/** Checks before the run that the truth scans fit the log's frames (a
+ * truth scan with a frame's time stamp and its number of bearings):
+ * InputError naming the file if `given` (--truth) and it scores none of
+ * them; a warning line on stderr, beginning with `app`, if it scores only
+ * some (or, found beside the input, none). */
+void checkTruthFitsFrames(const TruthFiles& truth, const RawlogFrames& frames, bool given, const std::string& app);
+
 /** The figures of one fused frame, if a truth scan has its time stamp and
  * its bearings; with a seen truth scan also the recall over what both
  * cameras see. */

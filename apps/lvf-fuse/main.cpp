@@ -52,6 +52,19 @@ struct Arguments
 	std::string threads;  //!< OpenCV's pool as set, for the summary ("2 threads")
 };
 
+/** InputError unless `output` can take the fused rawlog: it names a file,
+ * not a folder, and not the input log itself (which would be overwritten
+ * by the log it is being read into). */
+void checkOutputRawlog(const std::string& output, const std::string& input)
+{
+	namespace fs = std::filesystem;
+	if (fs::path(output).filename().empty() || fs::is_directory(output))
+		throw InputError("--output", "", "names a folder, not a file (e.g. " + (fs::path(output) / "out.rawlog").string() + ")");
+	std::error_code unknown;  // either missing: not the same file
+	if (fs::equivalent(output, input, unknown))
+		throw InputError("--output", "", "is the input rawlog " + input + ": write the fused log to another file");
+}
+
 /** Parses and checks the command line and sizes OpenCV's pool; none if
  * --help or --version was answered. */
 std::optional<Arguments> parseArguments(int argc, char** argv)
@@ -85,8 +98,9 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	if (!(argGridRes.getValue() >= 0.005 && argGridRes.getValue() <= 5))	 // as lvf-map's grids
 		throw InputError("--grid-resolution", "", "must be in [0.005, 5]");
 	if (argEvalEvery.getValue() < 0) throw InputError("--eval-every", "", "must be >= 0");
-	if (argOutput.isSet() && std::filesystem::path(argOutput.getValue()).filename().empty())
-		throw InputError("--output", "", "names a folder, not a file (e.g. " + argOutput.getValue() + "out.rawlog)");
+	if (argOutput.isSet()) checkOutputRawlog(argOutput.getValue(), argInput.getValue());
+	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the fused rawlog's own name goes to --output");
+	if (argQuiet.getValue() && argVerbose.getValue()) throw InputError("--verbose", "", "contradicts --quiet: give one of them");
 	threads.apply();
 
 	Arguments a;
@@ -102,7 +116,7 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	a.dumpConfig = argDumpConfig.getValue();
 	a.points = argPoints.getValue();
 	a.quiet = argQuiet.getValue();
-	a.verbose = argVerbose.getValue() && !a.quiet;
+	a.verbose = argVerbose.getValue();
 	a.threads = threads.describe();
 	return a;
 }
@@ -177,6 +191,9 @@ std::string fusionTime(const std::vector<double>& ms, const std::string& threads
 		lvf::common::median({ms.begin() + 1, ms.end()}, 0), threads.c_str(), ms.front());
 }
 
+/** "1 frame", "3 frames". */
+std::string counted(size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
 void printSummary(
 	const Arguments& a, const lvf::apps::RawlogFrames& in, const lvf::apps::FrameStream& stream, const Tally& t,
 	const lvf::apps::TruthFiles& truth, double seconds, const CLaserStereoFusion::TOptions& options,
@@ -187,12 +204,13 @@ void printSummary(
 		: std::string("; no odometry: grids assume the robot stood still") +
 			(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
 	std::cout << mrpt::format(
-		"%s: %s: %zu scans, %zu stereo pairs, %zu fused frames (%zu unpaired scans, "
-		"%zu bad frames, %zu frames on the laser alone) in %.2f s, %.0f MB of memory at most "
+		"%s: %s: %s, %s, %s (%s, %s, %s on the laser alone) in %.2f s, %.0f MB of memory at most "
 		"(%zu of %zu rawlog entries held at once)\n"
 		"  fusion %s%s\n",
-		kApp.c_str(), a.input.c_str(), in.scans, in.stereoPairs, in.frames.size(), in.unpairedScans, t.badFrames,
-		t.laserAlone, seconds, peakMemoryMB(), stream.entriesHeldAtMost(), in.entries,
+		kApp.c_str(), a.input.c_str(), counted(in.scans, "scan").c_str(), counted(in.stereoPairs, "stereo pair").c_str(),
+		counted(in.frames.size(), "fused frame").c_str(), counted(in.unpairedScans, "unpaired scan").c_str(),
+		counted(t.badFrames, "bad frame").c_str(), counted(t.laserAlone, "frame").c_str(), seconds, peakMemoryMB(),
+		stream.entriesHeldAtMost(), in.entries,
 		fusionTime(t.fusionMs, a.threads).c_str(), noOdometry.c_str());
 	if (t.rectified)
 		std::cout << mrpt::format(
@@ -239,6 +257,7 @@ int run(int argc, char** argv)
 		throw InputError(a.input, "", mrpt::format(
 			"no laser scan has a stereo pair within %.3f s (%zu scans, %zu stereo pairs)", a.maxTimeDiff,
 			in.scans, in.stereoPairs));
+	lvf::apps::checkTruthFitsFrames(truth, in, !a.truth.empty(), kApp);
 
 	// The outputs, staged; an explicit --output path beside its own folder.
 	lvf::common::StagedOutputFiles files(a.outdir);

@@ -40,7 +40,10 @@ int run(int argc, char** argv)
 		"band) and the robot's pose beside it, as lvf-simulate writes them.",
 		' ', "0.1.0");
 	TCLAP::ValueArg<std::string> argScene("s", "scene", "Middlebury scene folder, e.g. .../middlebury/Motorcycle", true, "", "DIR", cmd);
-	TCLAP::ValueArg<std::string> argOut("o", "out", "Output folder: NAME.rawlog, NAME_truth_scans.csv, NAME_gt_poses.txt (NAME: the scene folder's name)", true, "", "DIR", cmd);
+	// --out, and --outdir as the other programs call it.
+	TCLAP::ValueArg<std::string> argOut("o", "out", "Output folder: NAME.rawlog, NAME_truth_scans.csv, NAME_gt_poses.txt (NAME: the scene folder's name)", true, "", "DIR");
+	TCLAP::ValueArg<std::string> argOutdir("", "outdir", "The same as --out", true, "", "DIR");
+	cmd.xorAdd(argOut, argOutdir);
 	TCLAP::ValueArg<double> argLaserHeight("", "laser-height", "Height of the synthesised laser above the floor [m] (default 0.30)", false, 0.30, "H", cmd);
 	TCLAP::ValueArg<double> argRobotHeight("", "robot-height", "Top of the robot height band, for the truth scans [m] (default 1.20)", false, 1.20, "H", cmd);
 	TCLAP::ValueArg<double> argObstacleMin("", "obstacle-min-height", "Bottom of the robot height band [m] (default 0.05)", false, 0.05, "H", cmd);
@@ -61,6 +64,8 @@ int run(int argc, char** argv)
 	if (!(slice.height > 0)) throw InputError("--laser-height", "", "must be > 0");
 	if (!(band.low >= 0)) throw InputError("--obstacle-min-height", "", "must be >= 0");
 	if (!(band.high > band.low)) throw InputError("--robot-height", "", "must be above --obstacle-min-height");
+	if (!(slice.height < band.high))
+		throw InputError("--laser-height", "", "must be below --robot-height: the laser is on the robot");
 	if (!(slice.maxRange > 0)) throw InputError("--max-range", "", "must be > 0");
 	if (!(argResolution.getValue() > 0 && argResolution.getValue() <= 10))
 		throw InputError("--resolution-deg", "", "must be in (0, 10]");
@@ -74,7 +79,9 @@ int run(int argc, char** argv)
 	const auto inView = lvf::metrics::bearingsInView(*scan, truth, *stereo, band, slice.maxRange);
 	const auto hidden = lvf::metrics::hiddenBearings(*scan, truth, inView);
 
-	lvf::common::StagedOutputFiles files(argOut.getValue());
+	const std::string outdir = argOut.isSet() ? argOut.getValue() : argOutdir.getValue();
+	lvf::common::rejectRawlogNamedFolder(outdir, argOut.isSet() ? "--out" : "--outdir", "the rawlog is written inside it as NAME.rawlog");
+	lvf::common::StagedOutputFiles files(outdir);
 	{
 		lvf::common::RawlogWriter rawlog(
 			files.stage(scene.name + ".rawlog"), lvf::common::RawlogFormat::Observations);

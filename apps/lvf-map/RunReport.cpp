@@ -87,9 +87,11 @@ void printRunReport(
 	}
 	for (const auto& p : plans)
 	{
+		// Rounded first: a start a hair below zero would print as "-0.00".
+		auto shown = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
 		out << mrpt::format(
-			"  %s map, (%.2f, %.2f) -> (%.2f, %.2f): ", p.name.c_str(), ends.start.x, ends.start.y, ends.goal.x,
-			ends.goal.y);
+			"  %s map, (%.2f, %.2f) -> (%.2f, %.2f): ", p.name.c_str(), shown(ends.start.x), shown(ends.start.y),
+			shown(ends.goal.x), shown(ends.goal.y));
 		if (!p.plan.found())
 		{
 			out << describe(p.plan.outcome) << "\n";

@@ -18,6 +18,7 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/StagedOutputFiles.h>
@@ -25,6 +26,7 @@
 #include <lvfusion/metrics/PoseTrajectory.h>
 #include <lvfusion/metrics/ScanOnMap.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/CTicTac.h>
 #include <mrpt/system/filesystem.h>
@@ -52,6 +54,25 @@ struct Prior
 	std::optional<mrpt::maps::CSimpleMap> ownMap;  //!< built from the run's scans (no map given)
 };
 
+/** A warning line if most of the prior map's cells are occupied (a photo
+ * given by mistake, an image with the colours inverted): every return then
+ * lies "on the map" wherever the particles are, so the lost-robot warning
+ * below cannot fire. */
+void warnIfMostlyOccupied(const mrpt::maps::CMultiMetricMap& map, const std::string& mapPath)
+{
+	const auto grid = map.mapByClass<mrpt::maps::COccupancyGridMap2D>();
+	if (!grid || grid->getSizeX() == 0 || grid->getSizeY() == 0) return;
+	size_t occupied = 0;
+	for (unsigned y = 0; y < grid->getSizeY(); y++)
+		for (unsigned x = 0; x < grid->getSizeX(); x++) occupied += grid->getCell(x, y) < 0.5f;
+	const double share = double(occupied) / (double(grid->getSizeX()) * double(grid->getSizeY()));
+	if (share > 0.5)
+		std::cerr << mrpt::format(
+			"%s: warning: %s: %.0f %% of the prior map is occupied: is it a map (dark = occupied, light = free)? "
+			"Scans then match it anywhere\n",
+			kApp.c_str(), mapPath.c_str(), 100 * share);
+}
+
 /** The map at `mapPath`, or with none one built from the run's scans by
  * MRPT's ICP-SLAM, in the odometry frame: the particles then start round
  * the first odometry pose. */
@@ -65,6 +86,7 @@ Prior priorFor(const lvf::apps::LocalizationConfig& config, const std::string& m
 	if (!mapPath.empty())
 	{
 		p.text = lvf::apps::loadPriorMap(mapPath, config.globalMaps.imageResolution, *p.map);
+		warnIfMostlyOccupied(*p.map, mapPath);
 		return p;
 	}
 	p.ownMap = lvf::apps::buildMapFromScans(run);
@@ -156,7 +178,8 @@ int run(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argStart("", "start", "Start of the planned path (default: the world's first pose, else the first localised pose)", false, "", "X,Y", cmd);
 	TCLAP::ValueArg<std::string> argGoal("", "goal", "Goal of the planned path (default: the world's target, else the last localised pose)", false, "", "X,Y", cmd);
 	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file giving start (first path pose) and goal (target), in the world's frame (moved onto a map built from the run by where its first scan was taken)", false, "", "W.yaml", cmd);
-	TCLAP::ValueArg<unsigned> argSeed("", "seed", "Seed of the particle filter's random numbers (default 1)", false, 1, "N", cmd);
+	// Read wider than unsigned: TCLAP would wrap "-1" to 4294967295.
+	TCLAP::ValueArg<long long> argSeed("", "seed", "Seed of the particle filter's random numbers, 0 to 4294967295 (default 1)", false, 1, "N", cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
@@ -172,8 +195,11 @@ int run(int argc, char** argv)
 	const std::string input = argInput.getValue();
 	const std::string name = fs::path(input).stem().string();
 
+	if (argSeed.getValue() < 0 || argSeed.getValue() > 4294967295LL)
+		throw lvf::common::InputError("--seed", "", "must be in [0, 4294967295]");
 	// Where the plan starts and ends, checked before any work.
 	auto requested = lvf::apps::requestedEndpoints(argWorld.getValue(), argStart.getValue(), argGoal.getValue());
+	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the maps and plans are written inside it");
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());  // here: a bad folder is told before the work
 	const auto runLog = lvf::apps::loadMapRun(input, config.obsOnlyOdometry);
 	const auto truth = lvf::apps::loadRunTruth(input);
@@ -185,7 +211,7 @@ int run(int argc, char** argv)
 	if (mapInTruth) lvf::apps::placeWorldEndpointsOnMap(requested, *mapInTruth);
 
 	// 1-2. Localise every scan; accumulate both grids at the estimates.
-	mrpt::random::getRandomGenerator().randomize(argSeed.getValue());
+	mrpt::random::getRandomGenerator().randomize(static_cast<unsigned>(argSeed.getValue()));
 	lvf::apps::ParticleLocalizer localizer(config, prior.map, prior.initMin, prior.initMax, prior.onFreeSpace);
 	lvf::apps::GlobalGrids grids(config.globalMaps.resolution, config.globalMaps.visualMinHits);
 	const auto localised = localise(runLog, localizer, *prior.map, grids, quiet);
@@ -234,8 +260,8 @@ int run(int argc, char** argv)
 			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
 			onMap->median, onMap->under, onMap->total);
 	lvf::apps::printRunReport(std::cout, truth, mapInTruth, poses, plans, ends);
-	std::cout << "  wrote " << name << "_poses.txt, " << name << "_{laser" << (grids.fusedScans() ? ",fused" : "")
-			  << "}_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
+	std::cout << "  wrote " << name << "_poses.txt, " << name << (grids.fusedScans() ? "_{laser,fused}" : "_laser")
+			  << "_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
 	return lvf::common::kExitOk;
 }

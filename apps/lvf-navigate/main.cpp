@@ -10,6 +10,7 @@
 #include <lvfusion/vfh/CHolonomicVFH.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/ShippedFiles.h>
+#include <lvfusion/common/RemovedIfKilled.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/common/WrittenFiles.h>
@@ -125,6 +126,7 @@ class TemporaryFolder
 		std::string pattern = (std::filesystem::temp_directory_path() / "lvf-navigate-XXXXXX").string();
 		if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder");
 		m_path = pattern;
+		lvf::common::removeIfKilled(m_path);
 	}
 	~TemporaryFolder()
 	{
@@ -146,7 +148,9 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 	setup.ptgCacheDir = ptgCache.path();
 	setup.navigatorLogDir = files.stage(navlog + "/");
 	std::filesystem::create_directories(setup.navigatorLogDir);
-	lvf::common::RawlogWriter rawlog(files.stage(name + "_run.rawlog"), lvf::common::RawlogFormat::ActionsSensoryFrames);
+	const std::string rawlogName = name + "_run.rawlog";
+	lvf::common::RawlogWriter rawlog(files.stage(rawlogName), lvf::common::RawlogFormat::ActionsSensoryFrames);
+	size_t framesSensed = 0;
 	setup.onSensing = [&](const auto& frame, const auto& result) {
 		lvf::common::RawlogFrame f;
 		f.timestamp = frame.timestamp;
@@ -155,6 +159,7 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 		if (frame.stereo) f.observations.push_back(frame.stereo);
 		f.observations.push_back(result.fused);
 		rawlog.append(f);
+		framesSensed++;
 	};
 	const auto run = nav::runNavigation(scenario, setup);
 	rawlog.close();
@@ -162,19 +167,38 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 	const std::string line = mrpt::format(
 		"%s: %s %s %s: %s", kApp.c_str(), name.c_str(), setup.method.c_str(),
 		nav::sensingName(setup.sensing), m.summary().c_str());
-	lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
-	// The true pose of every control cycle, stamped as the run's rawlog is.
-	std::vector<lvf::metrics::StampedPose> poses;
-	for (size_t k = 0; k < m.trajectory.size(); k++)
-		poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
-			mrpt::poses::CPose2D(m.trajectory[k])});
-	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
+	// A scenario that could not be run (a NaN pose, a start in collision)
+	// sensed nothing: its metrics say why, and no empty log is left.
+	std::vector<std::string> written;
+	if (framesSensed > 0)
+		written = {"run.rawlog"};
+	else
+	{
+		files.withdraw(rawlogName);
+		files.withdraw(navlog);
+	}
+	if (!m.trajectory.empty())
+	{
+		lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
+		// The true pose of every control cycle, stamped as the run's rawlog is.
+		std::vector<lvf::metrics::StampedPose> poses;
+		for (size_t k = 0; k < m.trajectory.size(); k++)
+			poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
+				mrpt::poses::CPose2D(m.trajectory[k])});
+		lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
+		written.insert(written.begin(), {"trajectory.png", "poses.txt"});
+	}
 	lvf::common::writeTextFile(files.stage(name + "_metrics.txt"), line + "\n" + m.detail + "\n");
+	written.push_back("metrics.txt");
 	files.commit();
 	std::cout << line << "\n";
 	if (!quiet)
-		std::cout << "  " << m.detail << "\n  wrote " << name << "_{trajectory.png,poses.txt,run.rawlog,metrics.txt}, "
-				  << navlog << "/ in " << files.outputDir() << "\n";
+	{
+		std::string list;
+		for (const auto& w : written) list += (list.empty() ? "" : ",") + w;
+		std::cout << "  " << m.detail << "\n  wrote " << name << (written.size() > 1 ? "_{" + list + "}" : "_" + list)
+				  << (framesSensed > 0 ? ", " + navlog + "/" : std::string()) << " in " << files.outputDir() << "\n";
+	}
 	return nav::outcomeExitStatus(m.outcome);
 }
 
@@ -226,7 +250,7 @@ int run(int argc, char** argv)
 		' ', "0.1.0");
 	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file (YAML, see share/lvfusion/worlds/README.md; default: the box room, Fig. 7)", false, "", "W.yaml", cmd);
 	TCLAP::ValueArg<int> argRandom("r", "random-world", "A random room of this seed instead of --world (first seed with --batch; default 1)", false, -1, "SEED", cmd);
-	TCLAP::ValueArg<std::string> argRoomKinds("", "room-kind", "Random rooms: overhangs (tables, shelves, floating boxes) or visible (floor boxes only); with --batch a comma list (default: overhangs,visible)", false, "", "KIND[,KIND]", cmd);
+	TCLAP::ValueArg<std::string> argRoomKinds("", "room-kind", "Random rooms: overhangs (tables, shelves, floating boxes) or visible (floor boxes only) (default: overhangs); with --batch a comma list (default: overhangs,visible)", false, "", "KIND[,KIND]", cmd);
 	TCLAP::ValueArg<std::string> argMethod("m", "method", "Holonomic method (a registered class name: CHolonomicND, CHolonomicVFF, CHolonomicFullEval, ...; default: holonomic_method of the config)", false, "", "CLASS", cmd);
 	TCLAP::ValueArg<std::string> argMethods("", "methods", "With --batch: comma list of holonomic methods (default: --method)", false, "", "A,B", cmd);
 	TCLAP::ValueArg<std::string> argSensing("s", "sensing", "fused (laser + stereo, default) or laser; with --batch a comma list", false, "fused", "MODE", cmd);
@@ -243,6 +267,7 @@ int run(int argc, char** argv)
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration ([NavigationLoop], every MRPT navigator section and key, the simulator's and the fusion's sections; defaults overridden by --config, --sensors-config, --fusion-config, --method) and exit; it reads back as --config", cmd);
 	if (!lvf::common::parseCommandLine(cmd, argc, argv)) return lvf::common::kExitOk;
 	threads.apply();
+	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the run's rawlog is written inside it");
 
 	lvf::registerAllClasses();
 	nav::NavigationSetup setup;
@@ -308,8 +333,11 @@ int run(int argc, char** argv)
 		return runBatch(argBatch.getValue(), firstSeed, kinds, methods, sensings, setup, argOutdir.getValue(), argQuiet.getValue());
 	}
 	if (argMethods.isSet()) throw InputError("--methods", "", "only with --batch (use --method)");
-	if (sensings.size() != 1 || (argRoomKinds.isSet() && kinds.size() != 1))
-		throw InputError("--sensing", "", "a single run takes one sensing mode and one room kind");
+	if (sensings.size() != 1) throw InputError("--sensing", "", "a single run takes one sensing mode (lists only with --batch)");
+	if (argRoomKinds.isSet() && !argRandom.isSet())
+		throw InputError("--room-kind", "", "only for random rooms (with --random-world or --batch)");
+	if (kinds.size() != 1 && argRoomKinds.isSet())
+		throw InputError("--room-kind", "", "a single run takes one room kind (lists only with --batch)");
 	setup.sensing = sensings.front();
 
 	nav::NavigationScenario scenario;

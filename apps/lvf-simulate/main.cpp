@@ -138,7 +138,7 @@ int run(int argc, char** argv)
 		"observations only",
 		false, "sf", "sf|obs", cmd);
 	TCLAP::ValueArg<int> argFrames(
-		"", "frames", "Simulate only the first N poses of the path", false, 0,
+		"", "frames", "Simulate only the first N poses of the path (0: all of them)", false, 0,
 		"N", cmd);
 	TCLAP::ValueArg<int> argSeed(
 		"s", "seed", "Override [CStereoLaserSimulator] seed", false, -1, "N", cmd);
@@ -155,8 +155,11 @@ int run(int argc, char** argv)
 		return lvf::common::kExitOk;
 
 	auto options = loadOptions(argConfig.getValue());
-	if (argSeed.getValue() >= 0)
+	if (argSeed.isSet())
+	{
+		if (argSeed.getValue() < 0) throw InputError("--seed", "", "must be >= 0");
 		options.seed = static_cast<uint32_t>(argSeed.getValue());
+	}
 	if (argDumpConfig.getValue())
 	{
 		mrpt::config::CConfigFileMemory dump;
@@ -172,10 +175,12 @@ int run(int argc, char** argv)
 	const auto world = chooseWorld(argRandomWorld.isSet() ? std::optional<int>(argRandomWorld.getValue()) : std::nullopt,
 		argWorld.getValue(), argWorld.isSet(), argFrames.getValue());
 	const std::string name = argName.getValue().empty() ? world.name : argName.getValue();
+	if (!lvf::common::isPlainFileName(name)) throw InputError("--name", "", "'" + name + "' " + lvf::common::kPlainFileNameRule);
 	const bool quiet = argQuiet.getValue();
 
 	mrpt::system::CTicTac timer;
 	CStereoLaserSimulator sim(world, options);
+	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the rawlog is written inside it as NAME.rawlog (-n NAME)");
 	lvf::common::StagedOutputFiles files(argOutdir.getValue());
 	lvf::common::RawlogWriter rawlog(files.stage(name + ".rawlog"), format);
 	lvf::apps::GroundTruthWriter truth(files, name, argDepth.getValue());

@@ -1,11 +1,14 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProcessMemory.h>
+#include <lvfusion/common/RemovedIfKilled.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <vector>
 #include <unistd.h>
 
 namespace lvf::common
@@ -13,6 +16,7 @@ namespace lvf::common
 int runApp(const std::string& appName, const std::function<int()>& body)
 {
 	retainLargeAllocations();  // every app handles frame after frame
+	removeFoldersWhenKilled();  // no staging folder left by Ctrl-C
 	try
 	{
 		return body();
@@ -38,10 +42,26 @@ class OneLineFailureOutput : public TCLAP::StdOutput
 	{
 		// TCLAP says only that "one or more" required arguments are missing:
 		// name them.
+		// Alternatives (CmdLine::xorAdd) are each "required": name them as
+		// one, "--out or --outdir".
 		std::string missing;
+		std::vector<const TCLAP::Arg*> told;
+		auto tell = [&](const std::string& names) { missing += (missing.empty() ? "" : ", ") + names; };
+		for (const auto& alternatives : cmd.getXorHandler().getXorList())
+		{
+			std::string names;
+			bool anySet = false;
+			for (const auto* arg : alternatives)
+			{
+				names += (names.empty() ? "--" : " or --") + arg->getName();
+				anySet |= arg->isSet();
+				told.push_back(arg);
+			}
+			if (!anySet) tell(names);
+		}
 		for (const auto* arg : cmd.getArgList())
-			if (arg->isRequired() && !arg->isSet())
-				missing += (missing.empty() ? "" : ", ") + ("--" + arg->getName());
+			if (arg->isRequired() && !arg->isSet() && std::find(told.begin(), told.end(), arg) == told.end())
+				tell("--" + arg->getName());
 		if (!missing.empty())
 			throw InputError("command line", "", "missing required argument(s) " + missing + " (see --help)");
 		throw InputError("command line", e.argId(), e.error() + " (see --help)");

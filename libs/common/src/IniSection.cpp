@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace lvf::common
@@ -39,6 +40,10 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 	std::ifstream in(path);
 	bool inSection = false;
 	int lineNumber = 0;
+	// MRPT keeps the last of a key given twice in a section, without a word:
+	// a pasted duplicate would silently change a setting.
+	std::string section;
+	std::map<std::pair<std::string, std::string>, int> firstLineOf;	// (section, key) -> line
 	for (std::string line; std::getline(in, line);)
 	{
 		lineNumber++;
@@ -54,12 +59,18 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 			if (close == std::string::npos || close == 1)
 				throw InputError(path, where, "malformed section header '" + t + "'");
 			inSection = true;
+			section = mrpt::system::trim(t.substr(1, close - 1));
 			continue;
 		}
 		if (t.find('=') == std::string::npos || t[0] == '=')
 			throw InputError(path, where, "expected 'key = value' or '[section]', got '" + t + "'");
 		if (!inSection)
 			throw InputError(path, where, "key outside of any [section]");
+		const std::string key = mrpt::system::trim(t.substr(0, t.find('=')));
+		const auto [earlier, isNew] = firstLineOf.try_emplace({section, key}, lineNumber);
+		if (!isNew)
+			throw InputError(path, where + ": [" + section + "] " + key,
+				"given twice (first on line " + std::to_string(earlier->second) + ")");
 	}
 	try
 	{

@@ -74,12 +74,12 @@ void FusionScore::add(const FusionScore& o)
 	hiddenErrors.insert(hiddenErrors.end(), o.hiddenErrors.begin(), o.hiddenErrors.end());
 }
 
-FusionScore scoreFusedScan(
+std::vector<BearingVerdict> judgeBearings(
 	const mrpt::obs::CObservation2DRangeScan& laser,
 	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
-	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth)
+	const std::vector<bool>& inView, double maxRange)
 {
-	FusionScore s;
+	std::vector<BearingVerdict> verdicts(truth.size());
 	const auto hidden = hiddenBearings(laser, truth, inView);
 	for (size_t i = 0; i < truth.size(); i++)
 	{
@@ -89,24 +89,43 @@ FusionScore scoreFusedScan(
 		// Beyond Zmax vision is not asked to see; count the bearing only if
 		// the laser or the truth puts something within it.
 		if (std::min(t, l) > maxRange && f >= std::min<double>(l, maxRange)) continue;
+		BearingVerdict& v = verdicts[i];
+		v.scored = true;
+		v.phantom = f < std::min(t, l) - 0.10;
+		v.hidden = hidden[i] && t <= maxRange;
+		v.recalled = v.hidden && f <= t + 0.10;
+	}
+	return verdicts;
+}
+
+FusionScore scoreFusedScan(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
+	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth)
+{
+	FusionScore s;
+	const auto verdicts = judgeBearings(laser, fused, truth, inView, maxRange);
+	for (size_t i = 0; i < truth.size(); i++)
+	{
+		const BearingVerdict& v = verdicts[i];
+		if (!v.scored) continue;
+		const double t = truth[i], f = laserRangeOrMax(fused, i);
 		s.inView++;
-		if (f < std::min(t, l) - 0.10) s.phantoms++;
+		s.phantoms += v.phantom;
 		if (std::isfinite(t) && t <= maxRange)
 		{
 			s.withTruth++;
 			s.errors.push_back(static_cast<float>(std::abs(f - t)));
 		}
-		if (hidden[i] && t <= maxRange)
+		if (!v.hidden) continue;
+		s.hidden++;
+		s.recalled += v.recalled;
+		if (seenTruth && seenByBothCameras((*seenTruth)[i], truth[i]))
 		{
-			s.hidden++;
-			if (f <= t + 0.10) s.recalled++;
-			if (seenTruth && seenByBothCameras((*seenTruth)[i], truth[i]))
-			{
-				s.seenHidden++;
-				if (f <= t + 0.10) s.seenRecalled++;
-			}
-			s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
+			s.seenHidden++;
+			s.seenRecalled += v.recalled;
 		}
+		s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
 	}
 	return s;
 }

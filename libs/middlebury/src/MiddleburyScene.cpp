@@ -39,10 +39,12 @@ std::string MiddleburyScene::file(const std::string& fileName) const
 
 MiddleburyScene loadMiddleburyScene(const std::string& dir)
 {
-	if (!fs::is_directory(dir)) throw InputError(dir, "", "scene folder not found");
+	if (!fs::is_directory(dir))
+		throw InputError(dir, "", fs::exists(dir) ? "is a file, not a scene folder" : "scene folder not found");
 	MiddleburyScene s;
 	s.dir = dir;
-	const fs::path p = fs::path(dir).lexically_normal();
+	// Absolute, so that "." and ".." have a name (the outputs are named by it).
+	const fs::path p = fs::absolute(dir).lexically_normal();
 	// "data/Motorcycle/" has an empty filename(): take its parent's.
 	s.name = (p.has_filename() ? p.filename() : p.parent_path().filename()).string();
 	// Existence first, so that a half-copied folder names the file it lacks.

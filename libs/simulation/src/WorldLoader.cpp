@@ -1,5 +1,6 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/LikelyMeant.h>
+#include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/simulation/WorldLoader.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/core/format.h>
@@ -145,6 +146,7 @@ class WorldParser
 		World w;
 		w.sourceFile = m_source;
 		w.name = top.has("name") ? top["name"].text() : "world";
+		if (!lvf::common::isPlainFileName(w.name)) top["name"].fail(std::string("'") + w.name + "' " + lvf::common::kPlainFileNameRule);
 		m_seed = static_cast<uint32_t>(top.number("seed", 1, 0, 4e9));
 		if (top.has("robot")) parseRobot(top["robot"], w.robot);
 		if (top.has("light")) parseLight(top["light"], w.light);

@@ -63,6 +63,24 @@ struct FusionScore
 	std::vector<float> errors, hiddenErrors;
 };
 
+/** How one bearing counts in its scan's FusionScore. */
+struct BearingVerdict
+{
+	/** Counted among the in-view bearings: in view, and the truth or the
+	 * laser within Zmax (or the fused scan nearer than both). */
+	bool scored = false;
+	bool hidden = false;  //!< scored, hidden, and the truth within Zmax
+	bool recalled = false;	//!< hidden, and the fused range at most truth + 0.10 m
+	bool phantom = false;  //!< scored, and the fused range nearer than min(truth, laser) - 0.10 m
+};
+
+/** Each bearing's verdict, as scoreFusedScan counts it (so that a per-bearing
+ * listing adds up to the figures). */
+std::vector<BearingVerdict> judgeBearings(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
+	const std::vector<bool>& inView, double maxRange);
+
 /** `seenTruth`, if given: the truth scan of what both cameras see, for
  * seenHidden and seenRecalled. */
 FusionScore scoreFusedScan(
