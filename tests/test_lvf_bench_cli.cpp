@@ -75,3 +75,19 @@ TEST_F(LvfBenchCli, ABadRandomRoomsIsOneLineAndNothingRuns)
 		EXPECT_NE(r.err.find("--random-rooms"), std::string::npos) << r.err;
 	}
 }
+
+TEST_F(LvfBenchCli, OneCaseRunsAloneAndAListRunsNothing)
+{
+	const auto one = run(LVF_BENCH_BIN, "--no-tables --benchmark_filter=BM_VfhCycle_GridWindow/");
+	ASSERT_EQ(one.status, 0) << one.err;
+	EXPECT_NE(one.out.find("BM_VfhCycle_GridWindow"), std::string::npos) << one.out;
+	EXPECT_NE(one.out.find("VFH+ cycle"), std::string::npos) << one.out;
+	EXPECT_EQ(one.out.find("Median time per frame and stage"), std::string::npos) << "no tables";
+	const auto list = run(LVF_BENCH_BIN, "--benchmark_list_tests");
+	ASSERT_EQ(list.status, 0) << list.err;
+	EXPECT_NE(list.out.find("BM_Fusion_BoxRoom"), std::string::npos) << list.out;
+	EXPECT_EQ(list.out.find("Median time per frame and stage"), std::string::npos) << "nothing run";
+	const auto both = run(LVF_BENCH_BIN, "--no-tables --random-rooms 3");
+	EXPECT_EQ(both.status, 2);
+	EXPECT_NE(both.err.find("--no-tables: --random-rooms asks for a table"), std::string::npos) << both.err;
+}

@@ -120,7 +120,10 @@ TEST_F(LvfFuseCli, TheBearingsFileAddsUpToEachFramesFigures)
 		hidden[b.at("frame")] += b.at("counted_hidden") == "1";
 		recalled[b.at("frame")] += b.at("recalled") == "1";
 		inViewBeyond += b.at("in_view") == "1" && b.at("counted_in_view") == "0";
-		if (b.at("counted_hidden") == "1") EXPECT_EQ(b.at("hidden"), "1");
+		if (b.at("counted_hidden") == "1")
+		{
+			EXPECT_EQ(b.at("hidden"), "1");
+		}
 	}
 	ASSERT_EQ(frames.size(), 8u);
 	for (const auto& f : frames)
@@ -129,7 +132,9 @@ TEST_F(LvfFuseCli, TheBearingsFileAddsUpToEachFramesFigures)
 		EXPECT_EQ(std::to_string(counted[k]), f.at("in_view")) << "frame " << k;
 		EXPECT_EQ(std::to_string(hidden[k]), f.at("hidden")) << "frame " << k;
 		if (hidden[k] > 0)
+		{
 			EXPECT_NEAR(double(recalled[k]) / double(hidden[k]), std::stod(f.at("recall")), 1e-4) << "frame " << k;
+		}
 	}
 	EXPECT_GT(inViewBeyond, 0u) << "the box room has in-view bearings beyond z_max: the columns differ there";
 }

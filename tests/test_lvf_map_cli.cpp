@@ -376,6 +376,23 @@ TEST_F(LvfMap, AFilterThatLostTheRobotIsReported)
 	EXPECT_GT(e.medianPosition, 0.5);
 }
 
+TEST_F(LvfMap, ARelativeMapFileIsFoundBesideTheIni)
+{
+	// As MRPT's pf-localization .ini files give it: relative to the file.
+	simulateSmallRoom("beside_room");
+	ASSERT_EQ(run(kMap, "--input beside_room.rawlog --outdir own -q").status, 0);
+	fs::create_directories(m_dir / "maps");
+	fs::copy_file(m_dir / "own/beside_room_prior_map.gridmap.gz", m_dir / "maps/prior.gridmap.gz");
+	fs::create_directories(m_dir / "config/nested");
+	write("config/nested/beside.ini", "[LocalizationExperiment]\nmap_file = ../../maps/prior.gridmap.gz\n");
+	const auto r = run(kMap, "--input beside_room.rawlog --config config/nested/beside.ini --outdir out -q");
+	EXPECT_EQ(r.status, 0) << r.err;
+	const auto missing = write("config/nested/missing.ini", "[LocalizationExperiment]\nmap_file = ../nowhere.gridmap.gz\n");
+	const auto bad = run(kMap, "--input beside_room.rawlog --config config/nested/missing.ini --outdir out2 -q");
+	EXPECT_EQ(bad.status, 2);
+	EXPECT_NE(bad.err.find("config/nowhere.gridmap.gz: map file not found"), std::string::npos) << bad.err;
+}
+
 TEST_F(LvfMap, APriorMapMostlyOccupiedIsWarnedOf)
 {
 	// A picture given as the prior map by mistake, dark all over: every

@@ -34,6 +34,22 @@ void expectRoundTrip(Options changed, const std::string& section)
 	EXPECT_EQ(dump(throughText, section), dump(changed, section));
 	EXPECT_NE(dump(changed, section), dump(Options(), section)) << "the test must change something";
 }
+/** openIniFile refuses a file holding `text` with the line PATH: `message`. */
+void expectIniRefused(const std::string& name, const std::string& text, const std::string& message)
+{
+	const std::string path = ::testing::TempDir() + name;
+	std::ofstream(path) << text;
+	try
+	{
+		lvf::common::openIniFile(path);
+		ADD_FAILURE() << name << ": no error";
+	}
+	catch (const lvf::common::InputError& e)
+	{
+		EXPECT_EQ(std::string(e.what()), path + ": " + message);
+	}
+	std::remove(path.c_str());
+}
 }  // namespace
 
 TEST(Options, SimulatorRoundTrips)
@@ -110,18 +126,30 @@ TEST(Options, AMisspeltSectionIsRefusedWithTheSectionLikelyMeant)
 // reached the apps as "internal error: MRPT exception ====", status 1.
 TEST(Options, AFileMrptsPreprocessorRefusesIsAnInputErrorWithItsLine)
 {
-	const std::string path = ::testing::TempDir() + "undefined_variable.ini";
-	std::ofstream(path) << "[CLaserStereoFusion]\nrobot_height = ${NOT_DEFINED}\n";
-	try
-	{
-		lvf::common::openIniFile(path);
-		FAIL() << "no error";
-	}
-	catch (const lvf::common::InputError& e)
-	{
-		EXPECT_EQ(std::string(e.what()), path + ": Line 2: Unknown variable `${NOT_DEFINED}`");
-	}
+	expectIniRefused("undefined_variable.ini", "[CLaserStereoFusion]\nrobot_height = ${NOT_DEFINED}\n",
+		"Line 2: Unknown variable `${NOT_DEFINED}`");
+}
+
+TEST(Options, ALineEndingInABackslashGoesOnOnTheNextAsInMrpt)
+{
+	// MRPT's own navigator examples write long formulas over several lines.
+	const std::string path = testing::TempDir() + "continued.ini";
+	std::ofstream(path) << "[CLaserStereoFusion]\nrobot_height = \\\n   1.5\nfloor_height = 0.25\n";
+	const auto ini = lvf::common::openIniFile(path);
+	lvf::fusion::CLaserStereoFusion::TOptions options;
+	options.loadFromConfigFile(*ini, "CLaserStereoFusion");
+	EXPECT_DOUBLE_EQ(options.band.high, 1.5);
+	EXPECT_DOUBLE_EQ(options.floorHeight, 0.25);
 	std::remove(path.c_str());
+}
+
+TEST(Options, AKeyGivenTwiceInASectionIsRefusedNamingBothLines)
+{
+	// MRPT would keep the last without a word.
+	expectIniRefused("twice.ini",
+		"[CLaserStereoFusion]\nrobot_height = \\\n  1.5\n; more\n[ScanFusion]\nmin_points = 3\n"
+		"[CLaserStereoFusion]\nrobot_height = 1.2\n",
+		"line 8: [CLaserStereoFusion] robot_height: given twice (first on line 2)");
 }
 
 TEST(Options, AnMrptExceptionsMessageIsItsLineWithoutBannerOrCallStack)

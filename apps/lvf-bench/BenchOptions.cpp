@@ -43,6 +43,7 @@ std::pair<uint32_t, uint32_t> parseSeedRange(const std::string& text)
 OwnOptions takeOwnOptions(int& argc, char** argv)
 {
 	OwnOptions own;
+	bool noTables = false;
 	int kept = 1;
 	for (int i = 1; i < argc; i++)
 	{
@@ -60,10 +61,18 @@ OwnOptions takeOwnOptions(int& argc, char** argv)
 			own.middlebury = *dir;
 		else if (const auto seeds = value("--random-rooms"))
 			own.randomRooms = parseSeedRange(*seeds);
+		else if (arg == "--no-tables")
+			own.tables = false, noTables = true;
 		else
+		{
+			// Listing runs nothing, the tables included.
+			if (arg.rfind("--benchmark_list_tests", 0) == 0 && arg != "--benchmark_list_tests=false") own.tables = false;
 			argv[kept++] = argv[i];
+		}
 	}
 	argc = kept;
+	if (noTables && own.randomRooms)
+		throw lvf::common::InputError("--no-tables", "", "--random-rooms asks for a table: give one of them");
 	return own;
 }
 
@@ -74,7 +83,12 @@ void printOwnHelp(std::ostream& out)
 		<< LVF_MIDDLEBURY_DIR << ")\n"
 		<< "  --random-rooms FIRST-LAST  also compare the fusion with SGBM and BM on these seeded\n"
 		<< "                             random rooms (lvf-simulate --random-world SEED's), time and\n"
-		<< "                             accuracy over all their frames; e.g. 201-230\n\n";
+		<< "                             accuracy over all their frames; e.g. 201-230\n"
+		<< "  --no-tables                only the Google Benchmark cases (pick them with\n"
+		<< "                             --benchmark_filter), not the stage, accuracy and real-image\n"
+		<< "                             tables that follow them (a minute or more)\n"
+		<< "  Each case runs for its own minimum time (1-2 s, MinTime in the code), whatever\n"
+		<< "  --benchmark_min_time says.\n\n";
 }
 
 }  // namespace lvf::bench

@@ -14,10 +14,15 @@ struct OwnOptions
 {
 	std::string middlebury = LVF_MIDDLEBURY_DIR;  //!< folder of Middlebury scenes
 	std::optional<std::pair<uint32_t, uint32_t>> randomRooms;  //!< seeds, first and last
+	/** The stage, accuracy and real-image tables after the benchmarks;
+	 * off with --no-tables (one micro-benchmark, quickly) and with Google
+	 * Benchmark's --benchmark_list_tests (which runs nothing). */
+	bool tables = true;
 };
 
-/** Takes `--middlebury DIR` and `--random-rooms FIRST-LAST` (each also as
- * `--name=VALUE`) out of argv, leaving Google Benchmark's options; a bad
+/** Takes `--middlebury DIR`, `--random-rooms FIRST-LAST` (each also as
+ * `--name=VALUE`) and `--no-tables` out of argv, leaving Google Benchmark's
+ * options (and notes --benchmark_list_tests among them); a bad
  * value is an InputError naming the option. */
 OwnOptions takeOwnOptions(int& argc, char** argv);
 

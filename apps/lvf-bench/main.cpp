@@ -119,10 +119,13 @@ int main(int argc, char** argv)
 	if (const auto full = reporter.m_msPerIteration.find("BM_VfhCycle_GridWindow_Full");
 		full != reporter.m_msPerIteration.end())
 		std::cout << "  ... with every cell of the window occupied: " << full->second << " ms\n";
-	lvf::bench::printStageMedians(3);
-	lvf::bench::printAccuracy();
-	lvf::bench::printRealScenes(own.middlebury, 5);
-	if (own.randomRooms) lvf::bench::printSeededRooms(own.randomRooms->first, own.randomRooms->second, 3);
+	if (own.tables)
+	{
+		lvf::bench::printStageMedians(3);
+		lvf::bench::printAccuracy();
+		lvf::bench::printRealScenes(own.middlebury, 5);
+		if (own.randomRooms) lvf::bench::printSeededRooms(own.randomRooms->first, own.randomRooms->second, 3);
+	}
 	benchmark::Shutdown();
 	return 0;
 }

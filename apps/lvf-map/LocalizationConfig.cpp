@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <set>
+#include <filesystem>
 
 namespace lvf::apps
 {
+namespace fs = std::filesystem;
 using lvf::common::InputError;
 using lvf::common::writeOption;
 
@@ -53,7 +55,7 @@ minStdXY = 0.15                     // odometry noise floor, observation-only ra
 minStdPHI = 5                       // odometry heading noise floor, observation-only rawlogs [deg]
 
 [LocalizationExperiment]
-; map_file: the prior map (--map overrides it), relative to this file's folder
+; map_file: the prior map (--map overrides it); a relative one from the current folder, else from this file's folder
 map_file =
 particles_count = 2000              // initial particles [count]
 init_PDF_mode = 1                   // 1: uniform over the box below, 0: over its free grid cells
@@ -184,11 +186,10 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 	// then the user's file (naming it in errors) over them.
 	c.readExperiment(mrpt::config::CConfigFileMemory(std::string(kDefaultPfSections)));
 	if (user) c.readExperiment(*user);
-	if (!c.mapFile.empty() && user && !mrpt::system::fileExists(c.mapFile))
-	{
-		const std::string beside = mrpt::system::extractFileDirectory(path) + c.mapFile;
-		if (mrpt::system::fileExists(beside)) c.mapFile = beside;
-	}
+	// A relative map_file: from the current folder, as pf-localization takes
+	// it, else from the .ini's folder (where a missing one is then named).
+	if (!c.mapFile.empty() && user && !mrpt::system::fileExists(c.mapFile) && fs::path(c.mapFile).is_relative())
+		c.mapFile = (fs::path(path).parent_path() / c.mapFile).lexically_normal().string();
 	if (user) requireUsablePfOptions(*user, c.pfSections);
 	if (c.initMin.x > c.initMax.x || c.initMin.y > c.initMax.y || c.initMin.phi > c.initMax.phi)
 		throw InputError(source, "[LocalizationExperiment] init_PDF_min_*",

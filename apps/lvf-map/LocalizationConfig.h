@@ -54,7 +54,7 @@ struct LocalizationConfig
 	size_t particles = 0;
 	bool initOnFreeSpace = true;  //!< init_PDF_mode = 0
 	mrpt::math::TPose2D initMin, initMax;
-	std::string mapFile;  //!< map_file, resolved against the .ini's folder
+	std::string mapFile;  //!< map_file; a relative one from the current folder, else resolved against the .ini's folder
 	GlobalMapsOptions globalMaps;
 	lvf::planning::ValueIterationPlanner::TOptions planner;
 

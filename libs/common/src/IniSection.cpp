@@ -34,6 +34,15 @@ std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 	return "<memory>";
 }
 
+namespace
+{
+bool endsWithContinuation(const std::string& line)
+{
+	const auto last = line.find_last_not_of(" \t\r");
+	return last != std::string::npos && line[last] == '\\';
+}
+}  // namespace
+
 std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 {
 	requireInputFile(path, "configuration file");
@@ -46,13 +55,17 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 	std::map<std::pair<std::string, std::string>, int> firstLineOf;	// (section, key) -> line
 	for (std::string line; std::getline(in, line);)
 	{
-		lineNumber++;
+		const int startLine = ++lineNumber;
+		// MRPT joins a line ending in '\' with the next (a long formula
+		// written over several lines, as in MRPT's own example files).
+		for (std::string next; endsWithContinuation(line) && std::getline(in, next); lineNumber++)
+			line = line.substr(0, line.find_last_of('\\')) + next;
 		const auto first = line.find_first_not_of(" \t\r");
 		if (first == std::string::npos) continue;
 		const std::string t = line.substr(first);
 		if (t[0] == ';' || t[0] == '#' || t.rfind("//", 0) == 0 || t[0] == '@')
 			continue;
-		const std::string where = "line " + std::to_string(lineNumber);
+		const std::string where = "line " + std::to_string(startLine);
 		if (t[0] == '[')
 		{
 			const auto close = t.find(']');
@@ -67,7 +80,7 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 		if (!inSection)
 			throw InputError(path, where, "key outside of any [section]");
 		const std::string key = mrpt::system::trim(t.substr(0, t.find('=')));
-		const auto [earlier, isNew] = firstLineOf.try_emplace({section, key}, lineNumber);
+		const auto [earlier, isNew] = firstLineOf.try_emplace({section, key}, startLine);
 		if (!isNew)
 			throw InputError(path, where + ": [" + section + "] " + key,
 				"given twice (first on line " + std::to_string(earlier->second) + ")");

@@ -16,7 +16,8 @@ void removeIfKilled(const std::string& folder);
  * the folders above and then ends the process by the same signal (so the
  * shell sees it was interrupted). Call once, first thing in main, before
  * any other thread starts: the signals are blocked in every other thread
- * (they inherit the caller's mask). runApp does. */
+ * (they inherit the caller's mask; so would a child process, and the
+ * programs start none). runApp does. */
 void removeFoldersWhenKilled();
 
 }  // namespace lvf::common
