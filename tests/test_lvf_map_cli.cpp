@@ -250,6 +250,17 @@ TEST_F(LvfMap, ASelfBuiltMapIsComparedWithTheTruthInTheTruthsFrame)
 	EXPECT_NEAR(std::stod(m[2]), 0.0, 0.01);
 	EXPECT_NEAR(std::stod(m[3]), 4.7, 0.01);
 	EXPECT_NEAR(std::stod(m[4]), -2.3, 0.01);
+	EXPECT_EQ(r.out.find("is the map drawn in the world's frame?"), std::string::npos) << r.out;
+
+	// That map given back as the prior map, which is taken to be in the
+	// world's frame: the scans fit it, the poses miss the truth by the
+	// frames' offset, and the summary says why.
+	const auto again = run(kMap, "--input " + sample + " --map out/box_room_prior_map.gridmap.gz --outdir again");
+	ASSERT_EQ(again.status, 0) << again.err;
+	EXPECT_NE(again.out.find("the scans fit the prior map but the poses miss the truth: is the map drawn in the "
+							 "world's frame?"),
+		std::string::npos)
+		<< again.out;
 }
 
 TEST_F(LvfMap, SeededRandomWorldsLocaliseWithinTargets)

@@ -54,7 +54,8 @@ std::optional<mrpt::poses::CPose2D> mapFrameInTruth(
 
 void printRunReport(
 	std::ostream& out, const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& mapInTruth,
-	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends)
+	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends,
+	bool scansFitTheMap)
 {
 	if ((truth.posesPath || truth.obstaclesPath) && !mapInTruth)
 		out << "  the truth beside the input has no pose at the first scan's time, which would place the map built "
@@ -72,6 +73,9 @@ void printRunReport(
 		out << mrpt::format(
 			"  localisation against %s (%zu poses): median error %.3f m, %.2f deg (max %.3f m)\n",
 			truth.posesPath->c_str(), e.matched, e.medianPosition, mrpt::RAD2DEG(e.medianHeading), e.maxPosition);
+		if (scansFitTheMap && e.medianPosition > 0.5)
+			out << "  the scans fit the prior map but the poses miss the truth: is the map drawn in the world's "
+				   "frame? (a grid lvf-fuse or lvf-map made from a run is in that run's odometry frame)\n";
 	}
 	std::optional<lvf::planning::TraversableGrid> truthGrid;
 	if (truth.obstacles && mapInTruth)

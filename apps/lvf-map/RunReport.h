@@ -40,8 +40,12 @@ std::optional<mrpt::poses::CPose2D> mapFrameInTruth(
 	const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& worldStart, bool mapFromRun,
 	const MapStep& firstStep);
 
+/** The summary's lines against the truth, and the plans. `scansFitTheMap`:
+ * the localised scans lie on the prior map (so a large error against the
+ * truth points at the map's frame rather than at a lost filter). */
 void printRunReport(
 	std::ostream& out, const RunTruth& truth, const std::optional<mrpt::poses::CPose2D>& mapInTruth,
-	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends);
+	const std::vector<lvf::metrics::StampedPose>& poses, const std::vector<MapPlan>& plans, const Endpoints& ends,
+	bool scansFitTheMap);
 
 }  // namespace lvf::apps

@@ -259,7 +259,7 @@ int run(int argc, char** argv)
 		std::cout << mrpt::format(
 			"  localised scans on the prior map: median share of their returns %.2f, %zu of %zu scans under half\n",
 			onMap->median, onMap->under, onMap->total);
-	lvf::apps::printRunReport(std::cout, truth, mapInTruth, poses, plans, ends);
+	lvf::apps::printRunReport(std::cout, truth, mapInTruth, poses, plans, ends, onMap && onMap->median >= 0.9);
 	std::cout << "  wrote " << name << "_poses.txt, " << name << (grids.fusedScans() ? "_{laser,fused}" : "_laser")
 			  << "_{map.gridmap.gz,map.png,path.txt}, " << name << "_paths.png, " << name << "_plans.csv"
 			  << (prior.ownMap ? ", " + name + "_prior_map.{gridmap.gz,png}" : "") << " in " << files.outputDir() << "\n";
