@@ -217,6 +217,15 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 	const auto badValue = write("value.ini", "[ModelEvaluator]\nwindow_size = 8\n");
 	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/two_cubes.rawlog";
 	const auto noTruth = write("hello.csv", "hello world\n");
+	// A log of 2D scans only, as many of MRPT's sample logs are.
+	const auto scansOnly = m_dir / "scans_only.rawlog";
+	{
+		auto world = lvf::simulation::loadWorldFile(std::string(LVF_SHARE_DIR) + "/worlds/two_cubes.yaml");
+		CStereoLaserSimulator sim(world, CStereoLaserSimulator::TOptions());
+		const auto f = sim.simulateNextFrame(false);
+		lvf::common::RawlogWriter out(scansOnly.string(), lvf::common::RawlogFormat::Observations);
+		out.append({f.timestamp, f.odometry, {f.scan}});
+	}
 	const auto otherTruth = write("other_truth_scans.csv", "frame,timestamp,b0.00\n0,12345.0,1.5\n");
 	fs::create_directories(m_dir / "mydata");
 	const auto precious = write("mydata/precious.txt", "the user's\n");
@@ -243,6 +252,7 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --output mydata", "--output: names a folder, not a file (e.g. mydata/out.rawlog)"},
 		{"--input " + input.string() + " --output " + input.string(), "--output: is the input rawlog"},
 		{"--input " + sample + " -q -v", "--verbose: contradicts --quiet"},
+		{"--input " + scansOnly.string(), "scans_only.rawlog: holds no stereo pair (CObservationStereoImages) to fuse its 1 2D scan with"},
 	};
 	for (const auto& [args, expected] : cases)
 	{

@@ -423,6 +423,18 @@ TEST_F(LvfMap, APriorMapMostlyOccupiedIsWarnedOf)
 	EXPECT_EQ(good.err.find("of the prior map is occupied"), std::string::npos) << good.err;
 }
 
+TEST_F(LvfMap, MrptsDemoLogBuildsItsOwnMapThoughItsActionsHaveNoTime)
+{
+	// localization_demo.rawlog's odometry actions carry no time stamp, which
+	// MRPT's ICP-SLAM asserts: they take their frame's scan's.
+	const std::string rawlog = kMrptDatasets + "/localization_demo.rawlog";
+	if (!fs::exists(rawlog)) GTEST_SKIP() << "needs MRPT's demo data (mrpt-common)";
+	const auto r = run(kMap, "--input " + rawlog + " --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	EXPECT_NE(r.out.find("37 scans"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("built from the run's 37 laser scans by MRPT's ICP-SLAM"), std::string::npos) << r.out;
+}
+
 TEST_F(LvfMap, AgreesWithMrptPfLocalizationOnItsDemo)
 {
 	const std::string pfLocalization = LVF_PF_LOCALIZATION;

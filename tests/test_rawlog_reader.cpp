@@ -250,3 +250,14 @@ TEST(RawlogReaderRealLogs, ReadsEachAsMrptDoes)
 		EXPECT_EQ(oursRefused, mrptRefused) << log;
 	}
 }
+
+TEST(RawlogName, IsTheFileNameWithoutItsRawlogExtensions)
+{
+	using lvf::common::rawlogName;
+	EXPECT_EQ(rawlogName("data/run.rawlog"), "run");
+	EXPECT_EQ(rawlogName("data/run.rawlog.gz"), "run");  // a common name for MRPT's logs
+	EXPECT_EQ(rawlogName("run.gz"), "run");
+	EXPECT_EQ(rawlogName("/logs/two.parts.rawlog"), "two.parts");
+	EXPECT_EQ(rawlogName("run.bin"), "run");
+	EXPECT_EQ(rawlogName("run"), "run");
+}

@@ -1,6 +1,7 @@
 #include "TruthScoring.h"
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/RawlogReader.h>
 #include <mrpt/core/format.h>
 #include <mrpt/system/filesystem.h>
 
@@ -45,7 +46,7 @@ TruthFiles loadTruthFiles(const std::string& input, const std::string& given)
 {
 	TruthFiles t;
 	const std::filesystem::path in(input);
-	t.path = !given.empty() ? given : ifExists((in.parent_path() / (in.stem().string() + kTruthSuffix)).string());
+	t.path = !given.empty() ? given : ifExists((in.parent_path() / (lvf::common::rawlogName(input) + kTruthSuffix)).string());
 	t.seenPath = seenTruthBeside(t.path);
 	t.scans = readIfNamed(t.path);
 	t.seenScans = readIfNamed(t.seenPath);

@@ -18,6 +18,8 @@
 #include <lvfusion/common/ProgressBar.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/ShippedFiles.h>
+#include <lvfusion/common/CountedNoun.h>
+#include <lvfusion/common/RawlogReader.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
@@ -191,9 +193,6 @@ std::string fusionTime(const std::vector<double>& ms, const std::string& threads
 		lvf::common::median({ms.begin() + 1, ms.end()}, 0), threads.c_str(), ms.front());
 }
 
-/** "1 frame", "3 frames". */
-std::string counted(size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
-
 void printSummary(
 	const Arguments& a, const lvf::apps::RawlogFrames& in, const lvf::apps::FrameStream& stream, const Tally& t,
 	const lvf::apps::TruthFiles& truth, double seconds, const CLaserStereoFusion::TOptions& options,
@@ -207,9 +206,9 @@ void printSummary(
 		"%s: %s: %s, %s, %s (%s, %s, %s on the laser alone) in %.2f s, %.0f MB of memory at most "
 		"(%zu of %zu rawlog entries held at once)\n"
 		"  fusion %s%s\n",
-		kApp.c_str(), a.input.c_str(), counted(in.scans, "scan").c_str(), counted(in.stereoPairs, "stereo pair").c_str(),
-		counted(in.frames.size(), "fused frame").c_str(), counted(in.unpairedScans, "unpaired scan").c_str(),
-		counted(t.badFrames, "bad frame").c_str(), counted(t.laserAlone, "frame").c_str(), seconds, peakMemoryMB(),
+		kApp.c_str(), a.input.c_str(), lvf::common::counted(in.scans, "scan").c_str(), lvf::common::counted(in.stereoPairs, "stereo pair").c_str(),
+		lvf::common::counted(in.frames.size(), "fused frame").c_str(), lvf::common::counted(in.unpairedScans, "unpaired scan").c_str(),
+		lvf::common::counted(t.badFrames, "bad frame").c_str(), lvf::common::counted(t.laserAlone, "frame").c_str(), seconds, peakMemoryMB(),
 		stream.entriesHeldAtMost(), in.entries,
 		fusionTime(t.fusionMs, a.threads).c_str(), noOdometry.c_str());
 	if (t.rectified)
@@ -249,10 +248,17 @@ int run(int argc, char** argv)
 	}
 	lvf::registerAllClasses();
 
-	const std::string name = std::filesystem::path(a.input).stem().string();
+	const std::string name = lvf::common::rawlogName(a.input);
 	const auto truth = lvf::apps::loadTruthFiles(a.input, a.truth);
 	mrpt::system::CTicTac timer;
 	auto in = lvf::apps::planRawlogFrames(a.input, a.maxTimeDiff, a.labels);
+	if (in.scans == 0 || in.stereoPairs == 0)
+		throw InputError(a.input, "", in.scans + in.stereoPairs == 0
+				? "holds neither 2D laser scans (CObservation2DRangeScan) nor stereo pairs (CObservationStereoImages): "
+				  "nothing to fuse"
+				: in.scans == 0
+				? "holds no 2D laser scan (CObservation2DRangeScan) to fuse its " + lvf::common::counted(in.stereoPairs, "stereo pair") + " with"
+				: "holds no stereo pair (CObservationStereoImages) to fuse its " + lvf::common::counted(in.scans, "2D scan") + " with");
 	if (in.frames.empty())
 		throw InputError(a.input, "", mrpt::format(
 			"no laser scan has a stereo pair within %.3f s (%zu scans, %zu stereo pairs)", a.maxTimeDiff,

@@ -24,6 +24,14 @@ mrpt::obs::CActionCollection::Ptr odometryAction(
 	actions->insert(move);
 	return actions;
 }
+/** A log's own actions may carry no time stamp (MRPT's older sample logs,
+ * localization_demo.rawlog): they take their frame's scan's, since MRPT's
+ * ICP-SLAM asserts one. */
+void stampActions(mrpt::obs::CActionCollection& actions, mrpt::Clock::time_point stamp)
+{
+	for (size_t i = 0; i < actions.size(); i++)
+		if (const auto action = actions.get(i); action->timestamp == INVALID_TIMESTAMP) action->timestamp = stamp;
+}
 }  // namespace
 
 MapRun loadMapRun(
@@ -85,6 +93,7 @@ MapRun loadMapRun(
 				}
 			if (!step.laser) continue;	// a frame without a scan: its action adds to the next
 			step.action = pendingActions ? pendingActions : odometryAction({}, obsOnlyModel, step.laser->timestamp);
+			stampActions(*step.action, step.laser->timestamp);
 			step.odometry = lastStepOdometry = deadReckoning;
 			run.fusedScans += step.fused != nullptr;
 			run.steps.push_back(step);

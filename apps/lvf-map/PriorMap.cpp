@@ -3,6 +3,7 @@
 #include "GlobalGrids.h"
 #include "SerialisedFile.h"
 
+#include <lvfusion/common/CountedNoun.h>
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/InputError.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -42,7 +43,7 @@ std::string loadPriorMap(const std::string& path, double imageResolution, mrpt::
 		readSerialisedFile(path, simple, "map file");
 		if (simple.empty()) throw InputError(path, "", "empty simple map");
 		loadSimpleMap(simple, map);
-		return mrpt::format("%s (simple map, %zu keyframes)", path.c_str(), simple.size());
+		return path + " (simple map, " + lvf::common::counted(simple.size(), "keyframe") + ")";
 	}
 	auto& grid = gridOf(map, path);
 	if (ext == "gridmap")

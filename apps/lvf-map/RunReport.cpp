@@ -1,6 +1,7 @@
 #include "RunReport.h"
 #include "SerialisedFile.h"
 
+#include <lvfusion/common/RawlogReader.h>
 #include <lvfusion/metrics/ObstacleGridScore.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
  * lvf-fuse's NAME_fused.rawlog written into the same folder). */
 std::optional<std::string> besideInput(const std::string& input, const std::string& suffix)
 {
-	std::string stem = fs::path(input).stem().string();
+	std::string stem = lvf::common::rawlogName(input);
 	const std::string fused = "_fused";
 	for (int attempt = 0; attempt < 2; attempt++)
 	{
@@ -98,7 +99,14 @@ void printRunReport(
 			shown(ends.goal.x), shown(ends.goal.y));
 		if (!p.plan.found())
 		{
-			out << describe(p.plan.outcome) << "\n";
+			out << describe(p.plan.outcome);
+			// Blocked ends the user gave are errors before this (MapPlans.cpp):
+			// these are the run's own first or last pose.
+			if (p.plan.outcome == lvf::planning::PlanOutcome::StartBlocked ||
+				p.plan.outcome == lvf::planning::PlanOutcome::GoalBlocked)
+				out << ", though the robot stood there: [ValueIterationPlanner] robot_radius is wider than the room it "
+					   "had (or give --start / --goal)";
+			out << "\n";
 			continue;
 		}
 		out << mrpt::format(

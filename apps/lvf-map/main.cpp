@@ -16,11 +16,13 @@
 #include "RunReport.h"
 
 #include <lvfusion/common/AppMain.h>
+#include <lvfusion/common/CountedNoun.h>
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
+#include <lvfusion/common/RawlogReader.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/WrittenFiles.h>
 #include <lvfusion/metrics/PoseTrajectory.h>
@@ -91,9 +93,8 @@ Prior priorFor(const lvf::apps::LocalizationConfig& config, const std::string& m
 	}
 	p.ownMap = lvf::apps::buildMapFromScans(run);
 	lvf::apps::loadSimpleMap(*p.ownMap, *p.map);
-	p.text = mrpt::format(
-		"none given: built from the run's %zu laser scans by MRPT's ICP-SLAM (%zu keyframes)", run.steps.size(),
-		p.ownMap->size());
+	p.text = "none given: built from the run's " + lvf::common::counted(run.steps.size(), "laser scan") +
+		" by MRPT's ICP-SLAM (" + lvf::common::counted(p.ownMap->size(), "keyframe") + ")";
 	const auto& o = run.steps.front().odometry;
 	const double xy = config.globalMaps.ownMapInitXY, yaw = mrpt::DEG2RAD(config.globalMaps.ownMapInitYawDeg);
 	p.initMin = {o.x() - xy, o.y() - xy, o.phi() - yaw};
@@ -193,7 +194,7 @@ int run(int argc, char** argv)
 	const bool quiet = argQuiet.getValue();
 	mrpt::system::CTicTac timer;
 	const std::string input = argInput.getValue();
-	const std::string name = fs::path(input).stem().string();
+	const std::string name = lvf::common::rawlogName(input);
 
 	if (argSeed.getValue() < 0 || argSeed.getValue() > 4294967295LL)
 		throw lvf::common::InputError("--seed", "", "must be in [0, 4294967295]");
@@ -249,9 +250,9 @@ int run(int argc, char** argv)
 			kApp.c_str(), onMap->under, onMap->total, onMap->firstUnder);
 	if (quiet) return lvf::common::kExitOk;
 	std::cout << mrpt::format(
-		"%s: %s: %zu scans (%zu with a fused scan) localised in %.2f s, %zu particles at the end\n"
+		"%s: %s: %s (%zu with a fused scan) localised in %.2f s, %zu particles at the end\n"
 		"  prior map: %s\n",
-		kApp.c_str(), input.c_str(), runLog.steps.size(), runLog.fusedScans, timer.Tac(),
+		kApp.c_str(), input.c_str(), lvf::common::counted(runLog.steps.size(), "scan").c_str(), runLog.fusedScans, timer.Tac(),
 		localizer.particles(), prior.text.c_str());
 	if (!runLog.fusedScans)
 		std::cout << "  no FUSED scans in the input (run lvf-fuse first for the fused map): laser-only map only\n";

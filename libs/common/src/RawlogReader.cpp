@@ -5,6 +5,8 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
+#include <filesystem>
+
 namespace lvf::common
 {
 RawlogReader::RawlogReader(const std::string& path) : m_path(path)
@@ -34,6 +36,19 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 		throw InputError(
 			m_path, "record " + std::to_string(m_count), "not an MRPT object: corrupt, truncated or not a rawlog");
 	}
+}
+
+std::string rawlogName(const std::string& path)
+{
+	std::string name = std::filesystem::path(path).filename().string();
+	auto strip = [&](const std::string& ext) {
+		const bool has = name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
+		if (has) name.resize(name.size() - ext.size());
+		return has;
+	};
+	const bool gz = strip(".gz");
+	if (!strip(".rawlog") && !gz) return std::filesystem::path(path).stem().string();  // another extension
+	return name;
 }
 
 }  // namespace lvf::common

@@ -36,11 +36,15 @@ int outcomeExitStatus(Outcome o)
 
 std::string NavigationMetrics::summary() const
 {
+	// A figure that has none (a run that never started: nan, inf) without
+	// a unit after it.
+	auto metres = [](double v, const char* format) {
+		return std::isfinite(v) ? mrpt::format(format, v) + "m" : mrpt::format("%g", v);
+	};
 	return mrpt::format(
-		"outcome=%s reached=%d collisions=%d time=%.1fs path=%.3fm final_distance=%.2fm "
-		"min_clearance=%.3fm cycle=%.1fms",
-		outcomeName(outcome), reached() ? 1 : 0, collisions, time, pathLength, finalDistance,
-		minClearance, meanCycleMs);
+		"outcome=%s reached=%d collisions=%d time=%.1fs path=%.3fm final_distance=%s min_clearance=%s cycle=%.1fms",
+		outcomeName(outcome), reached() ? 1 : 0, collisions, time, pathLength, metres(finalDistance, "%.2f").c_str(),
+		metres(minClearance, "%.3f").c_str(), meanCycleMs);
 }
 
 double stepLengthInsideCircle(

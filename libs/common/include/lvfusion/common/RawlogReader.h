@@ -43,4 +43,9 @@ class RawlogReader
 	size_t m_count = 0;
 };
 
+/** The name a run's outputs take from its rawlog: the file name without
+ * `.rawlog`, `.rawlog.gz` or `.gz` ("run.rawlog.gz" -> "run"), or without
+ * whatever other extension it has. */
+std::string rawlogName(const std::string& path);
+
 }  // namespace lvf::common
