@@ -252,7 +252,7 @@ TEST_F(LvfFuseCli, EveryBadFileOrOptionIsOneLineExitTwoAndNothingWritten)
 		{"--input " + sample + " --output mydata", "--output: names a folder, not a file (e.g. mydata/out.rawlog)"},
 		{"--input " + input.string() + " --output " + input.string(), "--output: is the input rawlog"},
 		{"--input " + sample + " -q -v", "--verbose: contradicts --quiet"},
-		{"--input " + scansOnly.string(), "scans_only.rawlog: holds no stereo pair (CObservationStereoImages) to fuse its 1 2D scan with"},
+		{"--input " + scansOnly.string(), "scans_only.rawlog: holds no stereo pairs (CObservationStereoImages) to fuse its 1 2D scan with"},
 	};
 	for (const auto& [args, expected] : cases)
 	{

@@ -233,6 +233,22 @@ void printSummary(
 	std::cout << "  wrote " << wrote << "\n";
 }
 
+/** InputError naming what `in` lacks, if it has no 2D scans or no stereo
+ * pairs at all (most of MRPT's sample logs have no stereo camera): not a
+ * matter of --max-time-diff. */
+void requireBothSensors(const std::string& input, const lvf::apps::RawlogFrames& in)
+{
+	using lvf::common::counted;
+	const std::string scans = "2D laser scans (CObservation2DRangeScan)",
+					  pairs = "stereo pairs (CObservationStereoImages)";
+	if (in.scans == 0 && in.stereoPairs == 0)
+		throw InputError(input, "", "holds neither " + scans + " nor " + pairs + ": nothing to fuse");
+	if (in.scans == 0)
+		throw InputError(input, "", "holds no " + scans + " to fuse its " + counted(in.stereoPairs, "stereo pair") + " with");
+	if (in.stereoPairs == 0)
+		throw InputError(input, "", "holds no " + pairs + " to fuse its " + counted(in.scans, "2D scan") + " with");
+}
+
 int run(int argc, char** argv)
 {
 	const auto args = parseArguments(argc, argv);
@@ -252,13 +268,7 @@ int run(int argc, char** argv)
 	const auto truth = lvf::apps::loadTruthFiles(a.input, a.truth);
 	mrpt::system::CTicTac timer;
 	auto in = lvf::apps::planRawlogFrames(a.input, a.maxTimeDiff, a.labels);
-	if (in.scans == 0 || in.stereoPairs == 0)
-		throw InputError(a.input, "", in.scans + in.stereoPairs == 0
-				? "holds neither 2D laser scans (CObservation2DRangeScan) nor stereo pairs (CObservationStereoImages): "
-				  "nothing to fuse"
-				: in.scans == 0
-				? "holds no 2D laser scan (CObservation2DRangeScan) to fuse its " + lvf::common::counted(in.stereoPairs, "stereo pair") + " with"
-				: "holds no stereo pair (CObservationStereoImages) to fuse its " + lvf::common::counted(in.scans, "2D scan") + " with");
+	requireBothSensors(a.input, in);
 	if (in.frames.empty())
 		throw InputError(a.input, "", mrpt::format(
 			"no laser scan has a stereo pair within %.3f s (%zu scans, %zu stereo pairs)", a.maxTimeDiff,

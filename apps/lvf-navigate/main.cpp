@@ -139,6 +139,21 @@ class TemporaryFolder
 	std::string m_path;
 };
 
+/** NAME_trajectory.png, the path over the true obstacles, and NAME_poses.txt,
+ * the true pose of every control cycle stamped as the run's rawlog is. */
+void writeTrajectory(
+	const nav::NavigationScenario& scenario, const nav::NavigationRun& run, const nav::NavigationSetup& setup,
+	lvf::common::StagedOutputFiles& files, const std::string& name)
+{
+	lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
+	const auto& trajectory = run.metrics.trajectory;
+	std::vector<lvf::metrics::StampedPose> poses;
+	for (size_t k = 0; k < trajectory.size(); k++)
+		poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
+			mrpt::poses::CPose2D(trajectory[k])});
+	lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
+}
+
 int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setup, const std::string& outdir, bool quiet)
 {
 	lvf::common::StagedOutputFiles files(outdir);
@@ -148,8 +163,8 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 	setup.ptgCacheDir = ptgCache.path();
 	setup.navigatorLogDir = files.stage(navlog + "/");
 	std::filesystem::create_directories(setup.navigatorLogDir);
-	const std::string rawlogName = name + "_run.rawlog";
-	lvf::common::RawlogWriter rawlog(files.stage(rawlogName), lvf::common::RawlogFormat::ActionsSensoryFrames);
+	const std::string runLog = name + "_run.rawlog";
+	lvf::common::RawlogWriter rawlog(files.stage(runLog), lvf::common::RawlogFormat::ActionsSensoryFrames);
 	size_t framesSensed = 0;
 	setup.onSensing = [&](const auto& frame, const auto& result) {
 		lvf::common::RawlogFrame f;
@@ -174,18 +189,12 @@ int runSingle(const nav::NavigationScenario& scenario, nav::NavigationSetup setu
 		written = {"run.rawlog"};
 	else
 	{
-		files.withdraw(rawlogName);
+		files.withdraw(runLog);
 		files.withdraw(navlog);
 	}
 	if (!m.trajectory.empty())
 	{
-		lvf::apps::writeTrajectoryImage(scenario, run, setup.loop.targetTolerance, files.stage(name + "_trajectory.png"));
-		// The true pose of every control cycle, stamped as the run's rawlog is.
-		std::vector<lvf::metrics::StampedPose> poses;
-		for (size_t k = 0; k < m.trajectory.size(); k++)
-			poses.push_back({k, setup.sensors.startTime + double(k) * setup.loop.controlPeriod,
-				mrpt::poses::CPose2D(m.trajectory[k])});
-		lvf::metrics::writePoseFile(files.stage(name + "_poses.txt"), poses);
+		writeTrajectory(scenario, run, setup, files, name);
 		written.insert(written.begin(), {"trajectory.png", "poses.txt"});
 	}
 	lvf::common::writeTextFile(files.stage(name + "_metrics.txt"), line + "\n" + m.detail + "\n");
