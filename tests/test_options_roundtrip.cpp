@@ -152,6 +152,24 @@ TEST(Options, AKeyGivenTwiceInASectionIsRefusedNamingBothLines)
 		"line 8: [CLaserStereoFusion] robot_height: given twice (first on line 2)");
 }
 
+TEST(Options, TheLinesAreCheckedAsMrptReadsThem)
+{
+	const std::string path = ::testing::TempDir() + "as_mrpt.ini";
+	auto accepted = [&](const std::string& text) {
+		std::ofstream(path) << text;
+		EXPECT_NO_THROW(lvf::common::openIniFile(path)) << text;
+		std::remove(path.c_str());
+	};
+	// A '\' before a blank does not continue the line (nor on an @define):
+	// the next section header stays a header, so no key repeats.
+	accepted("[ScanFusion]\nmin_points = 3 \\ \n[CLaserStereoFusion]\nmin_points = 4\n");
+	accepted("@define X 1 \\\n[ScanFusion]\nmin_points = 3\n");
+	accepted("\xEF\xBB\xBF[ScanFusion]\r\nmin_points = 3\r\n");	 // a UTF-8 mark, CRLF lines
+	// Keys and sections compare as MRPT compares them, case aside.
+	expectIniRefused("case.ini", "[ScanFusion]\nmin_points = 3\n[scanfusion]\nMIN_POINTS = 4\n",
+		"line 4: [scanfusion] MIN_POINTS: given twice (first on line 2)");
+}
+
 TEST(Options, AnMrptExceptionsMessageIsItsLineWithoutBannerOrCallStack)
 {
 	const std::runtime_error mrpt("==== MRPT exception ====\nLine 2: Unknown variable\nCall stack backtrace:\n[0 ] 0x1\n");

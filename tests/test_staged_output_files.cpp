@@ -84,6 +84,21 @@ TEST_F(StagedOutputs, AFileWhereTheUserHasAFolderIsAnErrorAndTheFolderStays)
 	EXPECT_EQ(read(out / "run.rawlog" / "precious.txt"), "the user's");
 }
 
+TEST_F(StagedOutputs, AClashAnywhereIsFoundBeforeAnythingIsMoved)
+{
+	// The user has a file where the run writes a folder: nothing of the run
+	// is moved, not even the entries before the clash.
+	const fs::path out = m_root / "out";
+	write(out / "run_poses.txt", "an older run's");
+	write(out / "run_navlog", "a file of the user's");
+	StagedOutputFiles files(out.string());
+	write(files.stage("run_poses.txt"), "this run's");
+	write(files.stage("run_navlog/log_000.reactivenavlog"), "this run's");
+	EXPECT_THROW(files.commit(), InputError);
+	EXPECT_EQ(read(out / "run_poses.txt"), "an older run's");
+	EXPECT_EQ(read(out / "run_navlog"), "a file of the user's");
+}
+
 TEST_F(StagedOutputs, AWithdrawnOutputIsNotWritten)
 {
 	const fs::path out = m_root / "out";
@@ -93,6 +108,8 @@ TEST_F(StagedOutputs, AWithdrawnOutputIsNotWritten)
 	write(files.stage("run_metrics.txt"), "metrics");
 	files.withdraw("run.rawlog");
 	files.withdraw("run_navlog");
+	for (const std::string outside : {"", "../out", "/tmp", "a/../.."})  // never outside the staging folder
+		EXPECT_THROW(files.withdraw(outside), InputError) << "'" << outside << "'";
 	files.commit();
 	EXPECT_FALSE(fs::exists(out / "run.rawlog"));
 	EXPECT_FALSE(fs::exists(out / "run_navlog"));

@@ -2,6 +2,8 @@
 
 #include <lvfusion/common/InputError.h>
 
+#include <algorithm>
+#include <cctype>
 #include <limits>
 #include <stdexcept>
 
@@ -38,6 +40,12 @@ std::pair<uint32_t, uint32_t> parseSeedRange(const std::string& text)
 	return range;
 }
 
+/** A flag's value Google Benchmark reads as false. */
+bool isFalse(std::string value)
+{
+	std::transform(value.begin(), value.end(), value.begin(), [](unsigned char c) { return std::tolower(c); });
+	return value == "false" || value == "f" || value == "no" || value == "n" || value == "off" || value == "0";
+}
 }  // namespace
 
 OwnOptions takeOwnOptions(int& argc, char** argv)
@@ -65,8 +73,10 @@ OwnOptions takeOwnOptions(int& argc, char** argv)
 			own.tables = false, noTables = true;
 		else
 		{
-			// Listing runs nothing, the tables included.
-			if (arg.rfind("--benchmark_list_tests", 0) == 0 && arg != "--benchmark_list_tests=false") own.tables = false;
+			// Listing runs nothing, the tables included (false as Google
+			// Benchmark reads it: false, f, no, n, off, 0).
+			const std::string list = "--benchmark_list_tests";
+			if (arg == list || (arg.rfind(list + "=", 0) == 0 && !isFalse(arg.substr(list.size() + 1)))) own.tables = false;
 			argv[kept++] = argv[i];
 		}
 	}

@@ -10,7 +10,7 @@
 #include <lvfusion/vfh/CHolonomicVFH.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/ShippedFiles.h>
-#include <lvfusion/common/RemovedIfKilled.h>
+#include <lvfusion/common/SignalCleanup.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/common/WrittenFiles.h>
@@ -126,12 +126,13 @@ class TemporaryFolder
 		std::string pattern = (std::filesystem::temp_directory_path() / "lvf-navigate-XXXXXX").string();
 		if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder");
 		m_path = pattern;
-		lvf::common::removeIfKilled(m_path);
+		lvf::common::removeOnSignal(m_path);
 	}
 	~TemporaryFolder()
 	{
 		std::error_code ignored;
 		std::filesystem::remove_all(m_path, ignored);
+		lvf::common::keepOnSignal(m_path);
 	}
 	const std::string& path() const { return m_path; }
 

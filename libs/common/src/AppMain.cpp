@@ -1,7 +1,7 @@
 #include <lvfusion/common/AppMain.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/ProcessMemory.h>
-#include <lvfusion/common/RemovedIfKilled.h>
+#include <lvfusion/common/SignalCleanup.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
@@ -16,9 +16,9 @@ namespace lvf::common
 int runApp(const std::string& appName, const std::function<int()>& body)
 {
 	retainLargeAllocations();  // every app handles frame after frame
-	removeFoldersWhenKilled();  // no staging folder left by Ctrl-C
 	try
 	{
+		installSignalCleanup();	 // no staging folder left by Ctrl-C
 		return body();
 	}
 	catch (const InputError& e)

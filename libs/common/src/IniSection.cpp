@@ -6,6 +6,7 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -36,10 +37,26 @@ std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 
 namespace
 {
+/** `line` without the '\r' of a CRLF file. */
+std::string withoutCarriageReturn(std::string line)
+{
+	if (!line.empty() && line.back() == '\r') line.pop_back();
+	return line;
+}
+
+/** A line MRPT joins with the next: a '\' right before the line's end (not
+ * before blanks), and not an @define line, whose value MRPT takes whole. */
 bool endsWithContinuation(const std::string& line)
 {
-	const auto last = line.find_last_not_of(" \t\r");
-	return last != std::string::npos && line[last] == '\\';
+	const auto first = line.find_first_not_of(" \t");
+	return !line.empty() && line.back() == '\\' && first != std::string::npos && line[first] != '@';
+}
+
+/** Keys and section names as MRPT compares them: case aside. */
+std::string caseless(std::string text)
+{
+	std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+	return text;
 }
 }  // namespace
 
@@ -53,13 +70,18 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 	// a pasted duplicate would silently change a setting.
 	std::string section;
 	std::map<std::pair<std::string, std::string>, int> firstLineOf;	// (section, key) -> line
-	for (std::string line; std::getline(in, line);)
+	for (std::string raw; std::getline(in, raw);)
 	{
 		const int startLine = ++lineNumber;
+		std::string line = withoutCarriageReturn(raw);
+		if (startLine == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);	// a UTF-8 mark, as MRPT skips it
 		// MRPT joins a line ending in '\' with the next (a long formula
 		// written over several lines, as in MRPT's own example files).
 		for (std::string next; endsWithContinuation(line) && std::getline(in, next); lineNumber++)
-			line = line.substr(0, line.find_last_of('\\')) + next;
+		{
+			line.pop_back();
+			line += withoutCarriageReturn(next);
+		}
 		const auto first = line.find_first_not_of(" \t\r");
 		if (first == std::string::npos) continue;
 		const std::string t = line.substr(first);
@@ -80,7 +102,7 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 		if (!inSection)
 			throw InputError(path, where, "key outside of any [section]");
 		const std::string key = mrpt::system::trim(t.substr(0, t.find('=')));
-		const auto [earlier, isNew] = firstLineOf.try_emplace({section, key}, startLine);
+		const auto [earlier, isNew] = firstLineOf.try_emplace({caseless(section), caseless(key)}, startLine);
 		if (!isNew)
 			throw InputError(path, where + ": [" + section + "] " + key,
 				"given twice (first on line " + std::to_string(earlier->second) + ")");

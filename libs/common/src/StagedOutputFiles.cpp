@@ -1,5 +1,5 @@
 #include <lvfusion/common/InputError.h>
-#include <lvfusion/common/RemovedIfKilled.h>
+#include <lvfusion/common/SignalCleanup.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <mutex>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -19,9 +20,23 @@ namespace
 std::mutex stagingFoldersMutex;
 std::vector<std::pair<std::string, std::string>> stagingFolders;
 
+/** The first place where moving `from` to `to` would put a file where a
+ * folder is, or a folder where a file is; empty if none. Checked for every
+ * entry before any is moved, so that such a clash leaves the output folder
+ * as it was. */
+fs::path clashOf(const fs::path& from, const fs::path& to)
+{
+	if (!fs::exists(to)) return {};
+	if (fs::is_directory(from) != fs::is_directory(to)) return to;
+	if (!fs::is_directory(from)) return {};
+	for (const fs::directory_entry& e : fs::directory_iterator(from))
+		if (auto clash = clashOf(e.path(), to / e.path().filename()); !clash.empty()) return clash;
+	return {};
+}
+
 /** Moves `from` to `to`: a file replaces a file of that name, a folder is
  * merged entry by entry into a folder of that name (what else it holds, not
- * this run's, stays). A file where a folder is, or the reverse, throws. */
+ * this run's, stays). */
 void moveInto(const fs::path& from, const fs::path& to)
 {
 	if (fs::is_directory(from) && fs::is_directory(to))
@@ -30,9 +45,16 @@ void moveInto(const fs::path& from, const fs::path& to)
 			moveInto(e.path(), to / e.path().filename());
 		return;
 	}
-	if (fs::is_directory(to))
-		throw fs::filesystem_error("", to, std::make_error_code(std::errc::is_a_directory));
 	fs::rename(from, to);
+}
+
+/** InputError unless `relativePath` stays inside the folder it is taken in:
+ * not empty, not absolute, no ".." or "." part. */
+void requireInside(const fs::path& relativePath, const std::string& shownAs)
+{
+	const bool leaves = relativePath.empty() || relativePath.is_absolute() ||
+		std::any_of(relativePath.begin(), relativePath.end(), [](const fs::path& part) { return part == ".." || part == "."; });
+	if (leaves) throw InputError(shownAs, "", "an output must lie inside the output folder");
 }
 }  // namespace
 
@@ -75,11 +97,12 @@ StagedOutputFiles::StagedOutputFiles(std::string outputDir)
 										  : out.parent_path() / ("." + out.filename().string() + ".partial-" + pid))
 					   .string();
 	// Made now, so that an output folder that cannot be made is reported
-	// before the run's work rather than after it.
+	// before the run's work rather than after it (and registered first, so
+	// that a signal in between finds it).
+	removeOnSignal(m_stagingDir);
 	std::error_code ec;
 	fs::create_directories(m_stagingDir, ec);
 	if (ec) throw InputError(m_outputDir, "", "cannot write the outputs here: " + ec.message());
-	removeIfKilled(m_stagingDir);
 	const std::lock_guard<std::mutex> lock(stagingFoldersMutex);
 	stagingFolders.emplace_back((fs::path(m_stagingDir) / "").string(), (fs::path(m_outputDir) / "").string());
 }
@@ -88,25 +111,28 @@ StagedOutputFiles::~StagedOutputFiles()
 {
 	std::error_code ignored;
 	fs::remove_all(m_stagingDir, ignored);
+	keepOnSignal(m_stagingDir);
 }
 
 std::string StagedOutputFiles::stage(const std::string& relativePath)
 {
 	const fs::path rel(relativePath);
-	const bool leaves = rel.empty() || rel.is_absolute() ||
-		std::any_of(rel.begin(), rel.end(), [](const fs::path& part) { return part == ".." || part == "."; });
-	if (leaves) throw InputError(finalPath(relativePath), "", "an output must lie inside the output folder");
+	requireInside(rel, finalPath(relativePath));
 	const std::string top = rel.begin()->string();
 	if (std::find(m_topLevelEntries.begin(), m_topLevelEntries.end(), top) ==
 		m_topLevelEntries.end())
 		m_topLevelEntries.push_back(top);
 	const fs::path p = fs::path(m_stagingDir) / rel;
-	fs::create_directories(p.parent_path());
+	// Below the staging folder only: if a signal has just removed it, it is
+	// not made again (the process is ending).
+	if (p.parent_path() != fs::path(m_stagingDir) && fs::is_directory(m_stagingDir))
+		fs::create_directories(p.parent_path());
 	return p.string();
 }
 
 void StagedOutputFiles::withdraw(const std::string& relativePath)
 {
+	requireInside(relativePath, finalPath(relativePath));
 	std::error_code ignored;
 	fs::remove_all(fs::path(m_stagingDir) / relativePath, ignored);
 }
@@ -118,15 +144,19 @@ std::string StagedOutputFiles::finalPath(const std::string& relativePath) const
 
 void StagedOutputFiles::commit()
 {
+	const auto notKilledMeanwhile = holdOffSignalCleanup();
 	try
 	{
-		fs::create_directories(m_outputDir);
+		std::vector<std::pair<fs::path, fs::path>> moves;  // staged, then dropped (withdraw): none
 		for (const auto& entry : m_topLevelEntries)
-		{
-			const fs::path from = fs::path(m_stagingDir) / entry;
-			if (!fs::exists(from)) continue;  // staged, then dropped (withdraw)
-			moveInto(from, fs::path(m_outputDir) / entry);
-		}
+			if (const fs::path from = fs::path(m_stagingDir) / entry; fs::exists(from))
+				moves.emplace_back(from, fs::path(m_outputDir) / entry);
+		for (const auto& [from, to] : moves)
+			if (const fs::path clash = clashOf(from, to); !clash.empty())
+				throw InputError(m_outputDir, "", "cannot move the outputs into place: " + clash.string() + " is " +
+						(fs::is_directory(clash) ? "a folder, where this run wrote a file" : "a file, where this run wrote a folder"));
+		fs::create_directories(m_outputDir);
+		for (const auto& [from, to] : moves) moveInto(from, to);
 	}
 	catch (const fs::filesystem_error& e)
 	{

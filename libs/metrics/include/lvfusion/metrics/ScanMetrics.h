@@ -67,9 +67,10 @@ struct FusionScore
 struct BearingVerdict
 {
 	/** Counted among the in-view bearings: in view, and the truth or the
-	 * laser within Zmax (or the fused scan nearer than both). */
+	 * laser within Zmax, or else the fused scan nearer than the laser and
+	 * Zmax (vision reporting something there). */
 	bool scored = false;
-	bool hidden = false;  //!< scored, hidden, and the truth within Zmax
+	bool hidden = false;  //!< scored, hidden (DESIGN.md), and the truth within Zmax
 	bool recalled = false;	//!< hidden, and the fused range at most truth + 0.10 m
 	bool phantom = false;  //!< scored, and the fused range nearer than min(truth, laser) - 0.10 m
 };
