@@ -189,6 +189,11 @@ TEST_F(LvfNavigateCli, DumpConfigIsCompleteAndReadsBack)
 	// A bad key in one of the simulator's sections of it names the file.
 	const auto badSim = write("badsim.ini", r.out + "\n[SimulatedLaser]\nno_such_key = 1\n");
 	expectBadInput("--config '" + badSim.string() + "'", "badsim.ini: [SimulatedLaser] no_such_key");
+	// The shipped MRPT-style navigator file: no [CHolonomicFullEval] section
+	// MRPT would accept, which only matters once that method is chosen.
+	const auto mrptStyle = navigate("--config '" + std::string(LVF_SHARE_DIR) + "/config/reactive_vfh.ini' --dump-config");
+	EXPECT_EQ(mrptStyle.status, 0) << mrptStyle.err;
+	EXPECT_NE(mrptStyle.out.find("[CHolonomicVFH]"), std::string::npos);
 }
 
 TEST_F(LvfNavigateCli, ANavigatorConfigMrptRefusesIsOneLineNamingTheFile)

@@ -90,7 +90,20 @@ std::string completeNavigatorConfig(const std::string& navigatorConfig, const st
 	// file's non-MRPT sections are left to their owners.
 	mrpt::config::CConfigFileMemory out(savedByMrpt(navigatorConfig, holonomicMethod));
 	for (const auto& m : registeredHolonomicMethods())
-		if (m != holonomicMethod) addMissing(out, mrpt::config::CConfigFileMemory(savedByMrpt(navigatorConfig, m)), false);
+	{
+		if (m == holonomicMethod) continue;
+		// A section of a method not selected that MRPT would refuse (a key
+		// missing: MRPT's own example files have such) is left as the user
+		// wrote it, by the last step; it matters only once selected, and
+		// then the run's check names it.
+		try
+		{
+			addMissing(out, mrpt::config::CConfigFileMemory(savedByMrpt(navigatorConfig, m)), false);
+		}
+		catch (const std::exception&)
+		{
+		}
+	}
 	addMissing(out, mrpt::config::CConfigFileMemory(navigatorConfig), true);
 	return out.getContent();
 }
