@@ -29,16 +29,12 @@ std::vector<lvf::metrics::TruthScan> readIfNamed(const std::string& path)
 	return path.empty() ? std::vector<lvf::metrics::TruthScan>{} : lvf::metrics::readTruthScans(path);
 }
 
-/** The truth scan of a scan's time stamp with its number of bearings, if any. */
-const lvf::metrics::TruthScan* truthScanOf(
-	const std::vector<lvf::metrics::TruthScan>& truth, double scanTime, size_t bearings)
-{
-	const auto* t = lvf::metrics::findTruthScan(truth, scanTime);
-	return t && t->ranges.size() == bearings ? t : nullptr;
-}
+/** The truth scan of a frame's time stamp with its scan's number of
+ * bearings, if any (from the frame as planned: before its scan is read). */
 const lvf::metrics::TruthScan* truthScanOf(const std::vector<lvf::metrics::TruthScan>& truth, const FusionFrame& f)
 {
-	return truthScanOf(truth, mrpt::Clock::toDouble(f.scan->timestamp), f.scan->getScanSize());
+	const auto* t = lvf::metrics::findTruthScan(truth, f.scanTime);
+	return t && t->ranges.size() == f.scanBearings ? t : nullptr;
 }
 }  // namespace
 
@@ -58,13 +54,12 @@ void checkTruthFitsFrames(const TruthFiles& truth, const RawlogFrames& in, bool 
 	if (truth.path.empty()) return;
 	if (truth.scans.empty()) throw lvf::common::InputError(truth.path, "", "holds no truth scans");
 	size_t fitting = 0;
-	for (const auto& f : in.frames) fitting += truthScanOf(truth.scans, f.scanTime, f.scanBearings) != nullptr;
+	for (const auto& f : in.frames) fitting += truthScanOf(truth.scans, f) != nullptr;
 	if (fitting == in.frames.size()) return;
 	const std::string what = mrpt::format(
 		"a truth scan (its time stamp and bearings) for %zu of the %zu frames to fuse (%zu truth scans of %zu "
 		"bearings; the log's scans have %zu)",
-		fitting, in.frames.size(), truth.scans.size(), truth.scans.empty() ? size_t(0) : truth.scans.front().ranges.size(),
-		in.frames.front().scanBearings);
+		fitting, in.frames.size(), truth.scans.size(), truth.scans.front().ranges.size(), in.frames.front().scanBearings);
 	if (given && fitting == 0) throw lvf::common::InputError(truth.path, "", what + ": the truth of another log?");
 	std::cerr << app << ": warning: " << truth.path << ": " << what << "; only those are scored" << std::endl;
 }
@@ -82,8 +77,8 @@ std::optional<FrameTruth> scoreAgainstTruth(
 	ft.inView = lvf::metrics::bearingsInView(*f.scan, t->ranges, *f.stereo, options.band, options.depth.zMax);
 	ft.hidden = lvf::metrics::hiddenBearings(*f.scan, t->ranges, ft.inView);
 	ft.verdicts = lvf::metrics::judgeBearings(*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax);
-	ft.score = lvf::metrics::scoreFusedScan(
-		*f.scan, *r.fused, t->ranges, ft.inView, options.depth.zMax, seen ? &seen->ranges : nullptr);
+	ft.score = lvf::metrics::scoreVerdicts(
+		ft.verdicts, *r.fused, t->ranges, options.depth.zMax, seen ? &seen->ranges : nullptr);
 	return ft;
 }
 

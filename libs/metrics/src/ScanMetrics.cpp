@@ -98,13 +98,11 @@ std::vector<BearingVerdict> judgeBearings(
 	return verdicts;
 }
 
-FusionScore scoreFusedScan(
-	const mrpt::obs::CObservation2DRangeScan& laser,
-	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
-	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth)
+FusionScore scoreVerdicts(
+	const std::vector<BearingVerdict>& verdicts, const mrpt::obs::CObservation2DRangeScan& fused,
+	const std::vector<float>& truth, double maxRange, const std::vector<float>* seenTruth)
 {
 	FusionScore s;
-	const auto verdicts = judgeBearings(laser, fused, truth, inView, maxRange);
 	for (size_t i = 0; i < truth.size(); i++)
 	{
 		const BearingVerdict& v = verdicts[i];
@@ -128,5 +126,13 @@ FusionScore scoreFusedScan(
 		s.hiddenErrors.push_back(static_cast<float>(std::abs(f - t)));
 	}
 	return s;
+}
+
+FusionScore scoreFusedScan(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
+	const std::vector<bool>& inView, double maxRange, const std::vector<float>* seenTruth)
+{
+	return scoreVerdicts(judgeBearings(laser, fused, truth, inView, maxRange), fused, truth, maxRange, seenTruth);
 }
 }  // namespace lvf::metrics

@@ -82,6 +82,12 @@ std::vector<BearingVerdict> judgeBearings(
 	const mrpt::obs::CObservation2DRangeScan& fused, const std::vector<float>& truth,
 	const std::vector<bool>& inView, double maxRange);
 
+/** The figures of bearings judged by judgeBearings (with the same fused
+ * scan, truth and Zmax): for a caller that also lists the verdicts. */
+FusionScore scoreVerdicts(
+	const std::vector<BearingVerdict>& verdicts, const mrpt::obs::CObservation2DRangeScan& fused,
+	const std::vector<float>& truth, double maxRange, const std::vector<float>* seenTruth = nullptr);
+
 /** `seenTruth`, if given: the truth scan of what both cameras see, for
  * seenHidden and seenRecalled. */
 FusionScore scoreFusedScan(
