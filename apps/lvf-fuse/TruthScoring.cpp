@@ -2,6 +2,7 @@
 
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogReader.h>
+#include <lvfusion/common/Suffixes.h>
 #include <mrpt/core/format.h>
 #include <mrpt/system/filesystem.h>
 
@@ -19,9 +20,8 @@ std::string ifExists(const std::string& path) { return mrpt::system::fileExists(
 /** NAME_seen_truth_scans.csv beside NAME_truth_scans.csv. */
 std::string seenTruthBeside(const std::string& truthPath)
 {
-	const size_t n = kTruthSuffix.size();
-	if (truthPath.size() < n || truthPath.compare(truthPath.size() - n, n, kTruthSuffix)) return "";
-	return ifExists(truthPath.substr(0, truthPath.size() - n) + "_seen" + kTruthSuffix);
+	if (!lvf::common::endsWith(truthPath, kTruthSuffix)) return "";
+	return ifExists(truthPath.substr(0, truthPath.size() - kTruthSuffix.size()) + "_seen" + kTruthSuffix);
 }
 
 std::vector<lvf::metrics::TruthScan> readIfNamed(const std::string& path)

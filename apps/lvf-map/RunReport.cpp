@@ -2,6 +2,7 @@
 #include "SerialisedFile.h"
 
 #include <lvfusion/common/RawlogReader.h>
+#include <lvfusion/common/Suffixes.h>
 #include <lvfusion/metrics/ObstacleGridScore.h>
 #include <lvfusion/planning/PathMetrics.h>
 #include <mrpt/core/format.h>
@@ -21,13 +22,11 @@ namespace fs = std::filesystem;
 std::optional<std::string> besideInput(const std::string& input, const std::string& suffix)
 {
 	std::string stem = lvf::common::rawlogName(input);
-	const std::string fused = "_fused";
 	for (int attempt = 0; attempt < 2; attempt++)
 	{
 		const fs::path p = fs::path(input).parent_path() / (stem + suffix);
 		if (fs::exists(p)) return p.string();
-		if (stem.size() <= fused.size() || stem.compare(stem.size() - fused.size(), fused.size(), fused)) break;
-		stem.resize(stem.size() - fused.size());
+		if (!lvf::common::stripSuffix(stem, "_fused")) break;
 	}
 	return std::nullopt;
 }

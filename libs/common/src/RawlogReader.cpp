@@ -2,6 +2,7 @@
 
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/RawlogReader.h>
+#include <lvfusion/common/Suffixes.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
@@ -41,13 +42,8 @@ mrpt::serialization::CSerializable::Ptr RawlogReader::next()
 std::string rawlogName(const std::string& path)
 {
 	std::string name = std::filesystem::path(path).filename().string();
-	auto strip = [&](const std::string& ext) {
-		const bool has = name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
-		if (has) name.resize(name.size() - ext.size());
-		return has;
-	};
-	const bool gz = strip(".gz");
-	if (!strip(".rawlog") && !gz) return std::filesystem::path(path).stem().string();  // another extension
+	const bool gz = stripSuffix(name, ".gz");
+	if (!stripSuffix(name, ".rawlog") && !gz) return std::filesystem::path(path).stem().string();  // another extension
 	return name;
 }
 

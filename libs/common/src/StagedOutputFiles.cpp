@@ -1,6 +1,7 @@
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/SignalCleanup.h>
 #include <lvfusion/common/StagedOutputFiles.h>
+#include <lvfusion/common/Suffixes.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -60,10 +61,7 @@ void requireInside(const fs::path& relativePath, const std::string& shownAs)
 
 void rejectRawlogNamedFolder(const std::string& outdir, const std::string& option, const std::string& hint)
 {
-	const auto endsWith = [&](const std::string& end) {
-		return outdir.size() >= end.size() && outdir.compare(outdir.size() - end.size(), end.size(), end) == 0;
-	};
-	if ((endsWith(".rawlog") || endsWith(".rawlog.gz")) && !fs::is_directory(outdir))
+	if ((endsWith(outdir, ".rawlog") || endsWith(outdir, ".rawlog.gz")) && !fs::is_directory(outdir))
 		throw InputError(option, "", "'" + outdir + "' is named like a rawlog, but names the output folder; " + hint);
 }
 
