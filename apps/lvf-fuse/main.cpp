@@ -11,15 +11,15 @@
 #include "TruthScoring.h"
 
 #include <lvfusion/common/AppMain.h>
-#include <lvfusion/common/IniSection.h>
+#include <lvfusion/common/CountedNoun.h>
 #include <lvfusion/common/GridInsertion.h>
+#include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/Medians.h>
 #include <lvfusion/common/ProgressBar.h>
+#include <lvfusion/common/RawlogReader.h>
 #include <lvfusion/common/RawlogWriter.h>
 #include <lvfusion/common/ShippedFiles.h>
-#include <lvfusion/common/CountedNoun.h>
-#include <lvfusion/common/RawlogReader.h>
 #include <lvfusion/common/StagedOutputFiles.h>
 #include <lvfusion/common/ThreadsOption.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
@@ -202,13 +202,14 @@ void printSummary(
 		? ""
 		: std::string("; no odometry: grids assume the robot stood still") +
 			(options.memory.maxTravel > 0 ? ", and no frame remembers the points of earlier ones" : "");
+	using lvf::common::counted;
 	std::cout << mrpt::format(
 		"%s: %s: %s, %s, %s (%s, %s, %s on the laser alone) in %.2f s, %.0f MB of memory at most "
 		"(%zu of %zu rawlog entries held at once)\n"
 		"  fusion %s%s\n",
-		kApp.c_str(), a.input.c_str(), lvf::common::counted(in.scans, "scan").c_str(), lvf::common::counted(in.stereoPairs, "stereo pair").c_str(),
-		lvf::common::counted(in.frames.size(), "fused frame").c_str(), lvf::common::counted(in.unpairedScans, "unpaired scan").c_str(),
-		lvf::common::counted(t.badFrames, "bad frame").c_str(), lvf::common::counted(t.laserAlone, "frame").c_str(), seconds, peakMemoryMB(),
+		kApp.c_str(), a.input.c_str(), counted(in.scans, "scan").c_str(), counted(in.stereoPairs, "stereo pair").c_str(),
+		counted(in.frames.size(), "fused frame").c_str(), counted(in.unpairedScans, "unpaired scan").c_str(),
+		counted(t.badFrames, "bad frame").c_str(), counted(t.laserAlone, "frame").c_str(), seconds, peakMemoryMB(),
 		stream.entriesHeldAtMost(), in.entries,
 		fusionTime(t.fusionMs, a.threads).c_str(), noOdometry.c_str());
 	if (t.rectified)
