@@ -1,5 +1,6 @@
 // What moving a run's outputs into place may touch: only what the run
-// wrote. A folder the user already has is merged into, never replaced; a
+// wrote. A folder the user already has is merged into, never replaced (only
+// an earlier run's files of the kinds this run writes there go); a
 // name that would leave the output folder is refused before anything is
 // written; a name that cannot be a file's is refused where it is given.
 
@@ -58,6 +59,27 @@ TEST_F(StagedOutputs, AFolderOfTheSameNameIsMergedIntoNotReplaced)
 	EXPECT_EQ(read(out / "run_navlog" / "notes.txt"), "the user's");
 	EXPECT_EQ(read(out / "run_navlog" / "log_000.reactivenavlog"), "this run's");
 	EXPECT_EQ(read(out / "run_metrics.txt"), "metrics");
+}
+
+// An earlier, longer run's files in a folder of the run's would be read as
+// this run's (NAME_depth/ holding depth maps of frames the rawlog has not).
+TEST_F(StagedOutputs, AnEarlierRunsFilesOfTheSameKindInARunsFolderGo)
+{
+	const fs::path out = m_root / "out";
+	for (const char* frame : {"000000.pfm", "000001.pfm", "000002.pfm"})
+		write(out / "run_depth" / frame, "an earlier run's");
+	write(out / "run_depth" / "notes.txt", "the user's");
+	write(out / "run_depth" / "kept" / "000001.pfm", "the user's, in a folder of their own");
+	write(out / "other.pfm", "beside the run's folder");
+	StagedOutputFiles files(out.string());
+	write(files.stage("run_depth/000000.pfm"), "this run's");
+	files.commit();
+	EXPECT_EQ(read(out / "run_depth" / "000000.pfm"), "this run's");
+	EXPECT_FALSE(fs::exists(out / "run_depth" / "000001.pfm"));
+	EXPECT_FALSE(fs::exists(out / "run_depth" / "000002.pfm"));
+	EXPECT_EQ(read(out / "run_depth" / "notes.txt"), "the user's");
+	EXPECT_TRUE(fs::exists(out / "run_depth" / "kept" / "000001.pfm"));
+	EXPECT_EQ(read(out / "other.pfm"), "beside the run's folder");
 }
 
 TEST_F(StagedOutputs, ANameThatLeavesTheOutputFolderIsRefused)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <mutex>
+#include <set>
 #include <unistd.h>
 #include <utility>
 #include <vector>
@@ -35,13 +36,32 @@ fs::path clashOf(const fs::path& from, const fs::path& to)
 	return {};
 }
 
+/** In a folder of the run's (`to`, about to receive the files staged in
+ * `from`), the files an earlier run wrote that this one does not replace:
+ * plain files with an extension this run writes there (an earlier
+ * `lvf-simulate -d` of more frames left NAME_depth/000005.pfm beside this
+ * run's 000000.pfm; an earlier batch, more navlogs). Files of other kinds,
+ * the user's, are not of the run's. */
+std::vector<fs::path> staleFilesIn(const fs::path& to, const fs::path& from)
+{
+	std::set<fs::path> written, kinds;
+	for (const fs::directory_entry& e : fs::directory_iterator(from))
+		if (e.is_regular_file()) written.insert(e.path().filename()), kinds.insert(e.path().extension());
+	std::vector<fs::path> stale;
+	for (const fs::directory_entry& e : fs::directory_iterator(to))
+		if (e.is_regular_file() && !written.count(e.path().filename()) && kinds.count(e.path().extension()))
+			stale.push_back(e.path());
+	return stale;
+}
+
 /** Moves `from` to `to`: a file replaces a file of that name, a folder is
- * merged entry by entry into a folder of that name (what else it holds, not
- * this run's, stays). */
+ * merged entry by entry into a folder of that name, whose stale files of the
+ * run's kinds go (staleFilesIn; what else it holds stays). */
 void moveInto(const fs::path& from, const fs::path& to)
 {
 	if (fs::is_directory(from) && fs::is_directory(to))
 	{
+		for (const fs::path& stale : staleFilesIn(to, from)) fs::remove(stale);
 		for (const fs::directory_entry& e : fs::directory_iterator(from))
 			moveInto(e.path(), to / e.path().filename());
 		return;
