@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -33,90 +32,6 @@ std::string configSourceName(const mrpt::config::CConfigFileBase& cfg)
 	if (const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg))
 		return f->getAssociatedFile();
 	return "<memory>";
-}
-
-namespace
-{
-/** `line` without the '\r' of a CRLF file. */
-std::string withoutCarriageReturn(std::string line)
-{
-	if (!line.empty() && line.back() == '\r') line.pop_back();
-	return line;
-}
-
-/** A line MRPT joins with the next: a '\' right before the line's end (not
- * before blanks), and not an @define line, whose value MRPT takes whole. */
-bool endsWithContinuation(const std::string& line)
-{
-	const auto first = line.find_first_not_of(" \t");
-	return !line.empty() && line.back() == '\\' && first != std::string::npos && line[first] != '@';
-}
-
-/** Keys and section names as MRPT compares them: case aside. */
-std::string caseless(std::string text)
-{
-	std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-	return text;
-}
-}  // namespace
-
-std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
-{
-	requireInputFile(path, "configuration file");
-	std::ifstream in(path);
-	bool inSection = false;
-	int lineNumber = 0;
-	// MRPT keeps the last of a key given twice in a section, without a word:
-	// a pasted duplicate would silently change a setting.
-	std::string section;
-	std::map<std::pair<std::string, std::string>, int> firstLineOf;	// (section, key) -> line
-	for (std::string raw; std::getline(in, raw);)
-	{
-		const int startLine = ++lineNumber;
-		std::string line = withoutCarriageReturn(raw);
-		if (startLine == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);	// a UTF-8 mark, as MRPT skips it
-		// MRPT joins a line ending in '\' with the next (a long formula
-		// written over several lines, as in MRPT's own example files).
-		for (std::string next; endsWithContinuation(line) && std::getline(in, next); lineNumber++)
-		{
-			line.pop_back();
-			line += withoutCarriageReturn(next);
-		}
-		const auto first = line.find_first_not_of(" \t\r");
-		if (first == std::string::npos) continue;
-		const std::string t = line.substr(first);
-		if (t[0] == ';' || t[0] == '#' || t.rfind("//", 0) == 0 || t[0] == '@')
-			continue;
-		const std::string where = "line " + std::to_string(startLine);
-		if (t[0] == '[')
-		{
-			const auto close = t.find(']');
-			if (close == std::string::npos || close == 1)
-				throw InputError(path, where, "malformed section header '" + t + "'");
-			inSection = true;
-			section = mrpt::system::trim(t.substr(1, close - 1));
-			continue;
-		}
-		if (t.find('=') == std::string::npos || t[0] == '=')
-			throw InputError(path, where, "expected 'key = value' or '[section]', got '" + t + "'");
-		if (!inSection)
-			throw InputError(path, where, "key outside of any [section]");
-		const std::string key = mrpt::system::trim(t.substr(0, t.find('=')));
-		const auto [earlier, isNew] = firstLineOf.try_emplace({caseless(section), caseless(key)}, startLine);
-		if (!isNew)
-			throw InputError(path, where + ": [" + section + "] " + key,
-				"given twice (first on line " + std::to_string(earlier->second) + ")");
-	}
-	try
-	{
-		return std::make_unique<mrpt::config::CConfigFile>(path);
-	}
-	catch (const std::exception& e)
-	{
-		// MRPT's own preprocessing (@define, ${name}, $env{}, $eval{})
-		// refuses the file: its message names the line.
-		throw InputError(path, "", exceptionMessage(e));
-	}
 }
 
 IniSection::IniSection(
