@@ -154,6 +154,27 @@ TEST_F(LvfFuseCli, EvaluationPicturesCanBeThinnedOut)
 	}
 }
 
+// A log fused again (another configuration, lvf-navigate's run): this run's
+// FUSED scans and EVAL pictures replace the earlier fusion's, one of each a
+// frame, in either rawlog layout, and the summary says so.
+TEST_F(LvfFuseCli, ALogFusedAgainHoldsOnlyThisRunsResults)
+{
+	const std::string sample = std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
+	ASSERT_EQ(fuse("-q --input " + sample + " --outdir first").status, 0);
+	// The same frames in the observations layout.
+	ASSERT_EQ(run(LVF_SIMULATE_BIN, "-q --format obs --outdir obs").status, 0);
+	ASSERT_EQ(fuse("-q --input obs/box_room.rawlog --outdir obs").status, 0);
+	for (const std::string again : {"first/box_room_fused.rawlog", "obs/box_room_fused.rawlog"})
+	{
+		const auto r = fuse("--input " + again + " --outdir second --output second/again.rawlog");
+		ASSERT_EQ(r.status, 0) << r.err;
+		EXPECT_NE(r.out.find("16 observations of an earlier fusion in the input (FUSED scans, EVAL pictures) "
+							 "replaced by this run's"), std::string::npos) << r.out;
+		const auto counts = labelCounts(run(LVF_RAWLOG_EDIT, "--info -i second/again.rawlog").out);
+		for (const char* label : {"LASER", "STEREO", "FUSED", "EVAL"}) EXPECT_EQ(counts.at(label), 8) << again << " " << label;
+	}
+}
+
 TEST_F(LvfFuseCli, ThePointsFileHoldsEveryVisualPointEachBearingWasSetFrom)
 {
 	// --points: every visual point of every frame. They are the frames

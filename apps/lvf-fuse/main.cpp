@@ -6,6 +6,7 @@
 // where the input has it (TruthScoring.h).
 
 #include "FrameStream.h"
+#include "FusedLogWriter.h"
 #include "FusionOutputs.h"
 #include "RawlogFrames.h"
 #include "TruthScoring.h"
@@ -26,7 +27,6 @@
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <filesystem>
@@ -144,24 +144,6 @@ void routeFusionLog(CLaserStereoFusion& fusion, bool verbose)
 	});
 }
 
-/** One input entry, as it was, then the results of the frames that end at
- * it: inside the sensory frame in that layout, after the entry otherwise. */
-void writeWithResults(
-	lvf::common::RawlogWriter& out, const mrpt::serialization::CSerializable& entry,
-	const lvf::apps::FrameStream::Results& results)
-{
-	const auto* sf = dynamic_cast<const mrpt::obs::CSensoryFrame*>(&entry);
-	if (sf && !results.empty())
-	{
-		mrpt::obs::CSensoryFrame withResults(*sf);
-		for (const auto& o : results) withResults.insert(o);
-		out.appendEntry(withResults);
-		return;
-	}
-	out.appendEntry(entry);
-	for (const auto& o : results) out.appendEntry(*o);
-}
-
 /** The most memory the process has held so far [MB]. */
 double peakMemoryMB()
 {
@@ -176,6 +158,7 @@ struct Tally
 	lvf::metrics::FusionScore score;  //!< over the frames a truth scan scored
 	size_t badFrames = 0, laserAlone = 0, scored = 0;
 	std::vector<double> fusionMs;  //!< the fusion's own time, per frame
+	size_t replacedEarlier = 0;	 //!< FusedLogWriter::replaced()
 	/** The rectified geometry, where a frame's pair had to be rectified. */
 	std::optional<lvf::evaluation::RectifiedGeometry> rectified;
 };
@@ -228,6 +211,9 @@ void printSummary(
 		std::cout << mrpt::format(
 			"  recall %.3f of the %zu of them whose obstacle both cameras see (%s)\n", s.seenRecall(), s.seenHidden,
 			std::filesystem::path(truth.seenPath).filename().c_str());
+	if (t.replacedEarlier)
+		std::cout << "  " << counted(t.replacedEarlier, "observation")
+				  << " of an earlier fusion in the input (FUSED scans, EVAL pictures) replaced by this run's\n";
 	if (stream.externalImages())
 		std::cout << "  " << stream.externalImages() << " images read from " << stream.externalImagesFolder()
 				  << " (the output rawlog names them by absolute path)\n";
@@ -332,7 +318,9 @@ int run(int argc, char** argv)
 		if (!a.quiet && !a.verbose) progress.update(k + 1);	 // -v's lines instead
 		return results;
 	};
-	stream.run(fuseFrame, [&](const auto& entry, const auto& results) { writeWithResults(out, entry, results); });
+	lvf::apps::FusedLogWriter fusedLog(out);
+	stream.run(fuseFrame, [&](const auto& entry, const auto& results) { fusedLog.write(entry, results); });
+	tally.replacedEarlier = fusedLog.replaced();
 	out.close();
 	outputs.close();
 	files.commit();

@@ -255,7 +255,7 @@ int run(int argc, char** argv)
 		"judged against the full 3D world. Writes the trajectory over the true obstacles (PNG), "
 		"the run's rawlog, MRPT's navigation log and a metrics line. --batch N runs N random "
 		"rooms per room kind x methods x sensing and writes a table and CSV. Exit status of a "
-		"single run: 0 reached, 3 collision / timeout / navigator error, 4 scenario not runnable "
+		"single run: 0 reached, 3 collision / timeout / unreachable / navigator error, 4 scenario not runnable "
 		"(start in collision, target inside an obstacle, NaN pose), 2 bad input.",
 		' ', "0.1.0");
 	TCLAP::ValueArg<std::string> argWorld("w", "world", "World file (YAML, see share/lvfusion/worlds/README.md; default: the box room, Fig. 7)", false, "", "W.yaml", cmd);
