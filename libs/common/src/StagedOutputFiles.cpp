@@ -40,8 +40,8 @@ fs::path clashOf(const fs::path& from, const fs::path& to)
  * `from`), the files an earlier run wrote that this one does not replace:
  * plain files with an extension this run writes there (an earlier
  * `lvf-simulate -d` of more frames left NAME_depth/000005.pfm beside this
- * run's 000000.pfm; an earlier batch, more navlogs). Files of other kinds,
- * the user's, are not of the run's. */
+ * run's 000000.pfm). Files of other kinds, the user's, are not of the
+ * run's. */
 std::vector<fs::path> staleFilesIn(const fs::path& to, const fs::path& from)
 {
 	std::set<fs::path> written, kinds;
