@@ -69,15 +69,18 @@ TEST_F(StagedOutputs, AnEarlierRunsFilesOfTheSameKindInARunsFolderGo)
 	for (const char* frame : {"000000.pfm", "000001.pfm", "000002.pfm"})
 		write(out / "run_depth" / frame, "an earlier run's");
 	write(out / "run_depth" / "notes.txt", "the user's");
+	write(out / "run_depth" / "README", "the user's, with no extension");
 	write(out / "run_depth" / "kept" / "000001.pfm", "the user's, in a folder of their own");
 	write(out / "other.pfm", "beside the run's folder");
 	StagedOutputFiles files(out.string());
 	write(files.stage("run_depth/000000.pfm"), "this run's");
+	write(files.stage("run_depth/LOG"), "this run's, with no extension");
 	files.commit();
 	EXPECT_EQ(read(out / "run_depth" / "000000.pfm"), "this run's");
 	EXPECT_FALSE(fs::exists(out / "run_depth" / "000001.pfm"));
 	EXPECT_FALSE(fs::exists(out / "run_depth" / "000002.pfm"));
 	EXPECT_EQ(read(out / "run_depth" / "notes.txt"), "the user's");
+	EXPECT_EQ(read(out / "run_depth" / "README"), "the user's, with no extension");
 	EXPECT_TRUE(fs::exists(out / "run_depth" / "kept" / "000001.pfm"));
 	EXPECT_EQ(read(out / "other.pfm"), "beside the run's folder");
 }

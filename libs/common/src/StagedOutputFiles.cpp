@@ -46,7 +46,12 @@ std::vector<fs::path> staleFilesIn(const fs::path& to, const fs::path& from)
 {
 	std::set<fs::path> written, kinds;
 	for (const fs::directory_entry& e : fs::directory_iterator(from))
-		if (e.is_regular_file()) written.insert(e.path().filename()), kinds.insert(e.path().extension());
+		if (e.is_regular_file())
+		{
+			written.insert(e.path().filename());
+			// A name without an extension says nothing of its kind.
+			if (e.path().has_extension()) kinds.insert(e.path().extension());
+		}
 	std::vector<fs::path> stale;
 	for (const fs::directory_entry& e : fs::directory_iterator(to))
 		if (e.is_regular_file() && !written.count(e.path().filename()) && kinds.count(e.path().extension()))
