@@ -169,7 +169,7 @@ TEST_F(LvfFuseCli, ALogFusedAgainHoldsOnlyThisRunsResults)
 		const auto r = fuse("--input " + again + " --outdir second --output second/again.rawlog");
 		ASSERT_EQ(r.status, 0) << r.err;
 		EXPECT_NE(r.out.find("16 observations of an earlier fusion in the input (FUSED scans, EVAL pictures) "
-							 "replaced by this run's"), std::string::npos) << r.out;
+							 "left out: the output holds this run's"), std::string::npos) << r.out;
 		const auto counts = labelCounts(run(LVF_RAWLOG_EDIT, "--info -i second/again.rawlog").out);
 		for (const char* label : {"LASER", "STEREO", "FUSED", "EVAL"}) EXPECT_EQ(counts.at(label), 8) << again << " " << label;
 	}

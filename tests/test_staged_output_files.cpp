@@ -85,6 +85,22 @@ TEST_F(StagedOutputs, AnEarlierRunsFilesOfTheSameKindInARunsFolderGo)
 	EXPECT_EQ(read(out / "other.pfm"), "beside the run's folder");
 }
 
+// A run's folder that is a link to another place (the user's archive) is
+// merged into, but nothing there is removed: it is not the run's.
+TEST_F(StagedOutputs, ARunsFolderLinkedElsewhereIsNeverPruned)
+{
+	const fs::path out = m_root / "out", archive = m_root / "archive";
+	for (const char* frame : {"000000.pfm", "000001.pfm", "mine.pfm"}) write(archive / frame, "the user's");
+	fs::create_directories(out);
+	fs::create_directory_symlink(archive, out / "run_depth");
+	StagedOutputFiles files(out.string());
+	write(files.stage("run_depth/000000.pfm"), "this run's");
+	files.commit();
+	EXPECT_EQ(read(archive / "000000.pfm"), "this run's");
+	EXPECT_EQ(read(archive / "000001.pfm"), "the user's");
+	EXPECT_EQ(read(archive / "mine.pfm"), "the user's");
+}
+
 TEST_F(StagedOutputs, ANameThatLeavesTheOutputFolderIsRefused)
 {
 	const fs::path out = m_root / "parent" / "out";

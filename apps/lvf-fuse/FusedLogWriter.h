@@ -3,8 +3,10 @@
 // results of the frames that end at it (inside the sensory frame in that
 // layout). A log fused before -- lvf-fuse's own output, lvf-navigate's run
 // -- already holds FUSED scans and EVAL pictures: those are an earlier
-// fusion's, and this run's replace them, or the output would hold two FUSED
-// scans a frame that MRPT's tools and lvf-map would both take.
+// fusion's, and they are left out, or the output would hold two FUSED scans
+// a frame that MRPT's tools and lvf-map would both take. The output holds
+// this run's alone (no EVAL picture where --eval-every skips a frame, no
+// FUSED scan for a frame this run could not pair).
 
 #include "FrameStream.h"
 

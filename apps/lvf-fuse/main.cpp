@@ -213,7 +213,8 @@ void printSummary(
 			std::filesystem::path(truth.seenPath).filename().c_str());
 	if (t.replacedEarlier)
 		std::cout << "  " << counted(t.replacedEarlier, "observation")
-				  << " of an earlier fusion in the input (FUSED scans, EVAL pictures) replaced by this run's\n";
+				  << " of an earlier fusion in the input (FUSED scans, EVAL pictures) left out: the output holds "
+					 "this run's\n";
 	if (stream.externalImages())
 		std::cout << "  " << stream.externalImages() << " images read from " << stream.externalImagesFolder()
 				  << " (the output rawlog names them by absolute path)\n";

@@ -173,7 +173,7 @@ int run(int argc, char** argv)
 		"occupancy grids, and plan a path on each by value iteration (paper §7, Fig. 14).",
 		' ', "0.1.0");
 	// Not TCLAP-required: --dump-config needs no run.
-	TCLAP::ValueArg<std::string> argInput("i", "input", "Input rawlog, either MRPT layout (lvf-fuse's NAME_fused.rawlog for the fused map); required but with --dump-config", false, "", "RUN.rawlog", cmd);
+	TCLAP::ValueArg<std::string> argInput("i", "input", "Input rawlog, either MRPT layout (lvf-fuse's NAME_fused.rawlog for the fused map); required unless --dump-config", false, "", "RUN.rawlog", cmd);
 	TCLAP::ValueArg<std::string> argMap("m", "map", "Prior laser map to localise against: .gridmap(.gz), .simplemap(.gz) or an image (default: map_file of the config, else built from the run's scans)", false, "", "PRIOR", cmd);
 	TCLAP::ValueArg<std::string> argConfig("c", "config", "Configuration: MRPT pf-localization INI sections plus [GlobalMaps] and [ValueIterationPlanner] (--dump-config lists them all)", false, "", "FILE.ini", cmd);
 	TCLAP::ValueArg<std::string> argOutdir("o", "outdir", "Output folder (default: lvf-out)", false, "lvf-out", "DIR", cmd);

@@ -54,19 +54,23 @@ std::vector<fs::path> staleFilesIn(const fs::path& to, const fs::path& from)
 		}
 	std::vector<fs::path> stale;
 	for (const fs::directory_entry& e : fs::directory_iterator(to))
-		if (e.is_regular_file() && !written.count(e.path().filename()) && kinds.count(e.path().extension()))
+		if (fs::is_regular_file(e.symlink_status()) && !written.count(e.path().filename()) &&
+			kinds.count(e.path().extension()))
 			stale.push_back(e.path());
 	return stale;
 }
 
 /** Moves `from` to `to`: a file replaces a file of that name, a folder is
  * merged entry by entry into a folder of that name, whose stale files of the
- * run's kinds go (staleFilesIn; what else it holds stays). */
+ * run's kinds go (staleFilesIn; what else it holds stays). A folder of that
+ * name that is a link to another place is merged into but never pruned:
+ * what it points to is not the run's. */
 void moveInto(const fs::path& from, const fs::path& to)
 {
 	if (fs::is_directory(from) && fs::is_directory(to))
 	{
-		for (const fs::path& stale : staleFilesIn(to, from)) fs::remove(stale);
+		if (!fs::is_symlink(to))
+			for (const fs::path& stale : staleFilesIn(to, from)) fs::remove(stale);
 		for (const fs::directory_entry& e : fs::directory_iterator(from))
 			moveInto(e.path(), to / e.path().filename());
 		return;

@@ -33,10 +33,12 @@ class StagedOutputFiles
 	/** Moves every staged top-level entry into the output folder (creating
 	 * it if needed): a file replaces an older file of the same name, a
 	 * folder is merged into a folder of the same name file by file. Such a
-	 * folder is the run's (NAME_depth/, NAME_navlog/): its files with an
-	 * extension this run wrote there and did not replace are an earlier
-	 * run's, and are removed; any other file in it, and anything else in the
-	 * output folder, is never touched. InputError naming the
+	 * folder is the run's (NAME_depth/, NAME_navlog/): its plain files with
+	 * an extension this run wrote there, which this run did not replace, are
+	 * taken for an earlier run's and removed (a file of that kind the user
+	 * put there goes too); files of other kinds in it, anything else in the
+	 * output folder, and a folder that is a link to elsewhere are never
+	 * pruned. InputError naming the
 	 * folder if that cannot be done (a file where a folder is, or the
 	 * reverse). */
 	void commit();
