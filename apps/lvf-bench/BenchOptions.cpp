@@ -1,9 +1,8 @@
 #include "BenchOptions.h"
 
 #include <lvfusion/common/InputError.h>
+#include <mrpt/system/string_utils.h>
 
-#include <algorithm>
-#include <cctype>
 #include <limits>
 #include <stdexcept>
 
@@ -41,9 +40,9 @@ std::pair<uint32_t, uint32_t> parseSeedRange(const std::string& text)
 }
 
 /** A flag's value Google Benchmark reads as false. */
-bool isFalse(std::string value)
+bool isFalse(const std::string& given)
 {
-	std::transform(value.begin(), value.end(), value.begin(), [](unsigned char c) { return std::tolower(c); });
+	const std::string value = mrpt::system::lowerCase(given);
 	return value == "false" || value == "f" || value == "no" || value == "n" || value == "off" || value == "0";
 }
 }  // namespace

@@ -9,8 +9,6 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/string_utils.h>
 
-#include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -33,13 +31,6 @@ bool endsWithContinuation(const std::string& line)
 {
 	const auto first = line.find_first_not_of(" \t");
 	return !line.empty() && line.back() == '\\' && first != std::string::npos && line[first] != '@';
-}
-
-/** Keys and section names as MRPT compares them: case aside. */
-std::string caseless(std::string text)
-{
-	std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-	return text;
 }
 
 /** A file's lines as MRPT's parser sees them: a CRLF's '\r' and a first
@@ -105,7 +96,9 @@ std::unique_ptr<mrpt::config::CConfigFile> openIniFile(const std::string& path)
 			throw InputError(path, where, "expected 'key = value' or '[section]', got '" + t + "'");
 		if (!inSection) throw InputError(path, where, "key outside of any [section]");
 		const std::string key = mrpt::system::trim(t.substr(0, t.find('=')));
-		const auto [earlier, isNew] = firstLineOf.try_emplace({caseless(section), caseless(key)}, line->number);
+		// Keys and section names as MRPT compares them: case aside.
+		const auto [earlier, isNew] = firstLineOf.try_emplace(
+			{mrpt::system::lowerCase(section), mrpt::system::lowerCase(key)}, line->number);
 		if (!isNew)
 			throw InputError(path, where + ": [" + section + "] " + key,
 				"given twice (first on line " + std::to_string(earlier->second) + ")");

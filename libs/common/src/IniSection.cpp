@@ -6,7 +6,6 @@
 #include <mrpt/system/string_utils.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -104,8 +103,7 @@ int IniSection::integer(
 bool IniSection::flag(const std::string& key, bool defaultValue)
 {
 	if (!has(key)) return defaultValue;
-	std::string s = value(key);
-	std::transform(s.begin(), s.end(), s.begin(), ::tolower);
+	const std::string s = mrpt::system::lowerCase(value(key));
 	if (s == "true" || s == "1" || s == "yes" || s == "on") return true;
 	if (s == "false" || s == "0" || s == "no" || s == "off") return false;
 	fail(key, "'" + s + "' is not a boolean (true/false)");

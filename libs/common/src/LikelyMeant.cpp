@@ -1,18 +1,12 @@
 #include <lvfusion/common/LikelyMeant.h>
+#include <mrpt/system/string_utils.h>
 
 #include <algorithm>
-#include <cctype>
 
 namespace lvf::common
 {
 namespace
 {
-std::string lowered(std::string s)
-{
-	for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-	return s;
-}
-
 /** Edits between a and b, a swap of neighbours counting as one (the
  * "optimal string alignment" distance). Written here because none of the
  * project's libraries (MRPT, OpenCV, Eigen) offers one. */
@@ -37,7 +31,7 @@ size_t editDistance(const std::string& a, const std::string& b)
 
 std::string likelyMeant(const std::string& name, const std::vector<std::string>& known)
 {
-	const std::string typed = lowered(name);
+	const std::string typed = mrpt::system::lowerCase(name);
 	if (typed.empty()) return "";
 	const size_t most = std::min<size_t>(2, (typed.size() - 1) / 3);
 	std::string best;
@@ -45,9 +39,9 @@ std::string likelyMeant(const std::string& name, const std::vector<std::string>&
 	bool tie = false;
 	for (const auto& candidate : known)
 	{
-		const size_t distance = editDistance(typed, lowered(candidate));
+		const size_t distance = editDistance(typed, mrpt::system::lowerCase(candidate));
 		if (distance < bestDistance) best = candidate, bestDistance = distance, tie = false;
-		else if (distance == bestDistance && lowered(candidate) != lowered(best)) tie = true;
+		else if (distance == bestDistance && mrpt::system::lowerCase(candidate) != mrpt::system::lowerCase(best)) tie = true;
 	}
 	return bestDistance <= most && !tie ? best : "";
 }
