@@ -1,5 +1,6 @@
 #include "FusedLogWriter.h"
 
+#include <lvfusion/common/ObservationLabels.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CSensoryFrame.h>
@@ -12,8 +13,9 @@ namespace
  * evaluation pictures, by the labels lvf-fuse gives them. */
 bool fromAnEarlierFusion(const mrpt::obs::CObservation& o)
 {
-	return (o.sensorLabel == "FUSED" && dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&o)) ||
-		(o.sensorLabel == "EVAL" && dynamic_cast<const mrpt::obs::CObservationImage*>(&o));
+	return (o.sensorLabel == lvf::common::kFusedScanLabel &&
+			   dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&o)) ||
+		(o.sensorLabel == lvf::common::kEvaluationImageLabel && dynamic_cast<const mrpt::obs::CObservationImage*>(&o));
 }
 }  // namespace
 

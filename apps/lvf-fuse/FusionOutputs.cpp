@@ -2,6 +2,7 @@
 
 #include <lvfusion/common/GridInsertion.h>
 #include <lvfusion/common/GridOutputs.h>
+#include <lvfusion/common/ObservationLabels.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
 #include <mrpt/core/format.h>
 #include <opencv2/imgproc.hpp>
@@ -32,7 +33,7 @@ mrpt::obs::CObservationImage::Ptr evaluationImage(
 	for (const auto& p : r.search.points)
 		cv::circle(picture, cv::Point(cvRound(p.u), cvRound(p.v)), 1, {0, 255, 255}, cv::FILLED);
 	auto obs = std::make_shared<mrpt::obs::CObservationImage>();
-	obs->sensorLabel = "EVAL";
+	obs->sensorLabel = lvf::common::kEvaluationImageLabel;
 	obs->timestamp = stamp;
 	obs->image = mrpt::img::CImage(picture, mrpt::img::DEEP_COPY);
 	obs->cameraPose = r.geometry.leftPose;

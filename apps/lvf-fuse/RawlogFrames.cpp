@@ -7,6 +7,7 @@
 #include <mrpt/obs/CObservationOdometry.h>
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/ObservationLabels.h>
 #include <lvfusion/common/OdometryReadings.h>
 #include <mrpt/core/format.h>
 
@@ -67,7 +68,7 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 	auto take = [&](ObservationPlace at, const mrpt::obs::CObservation::Ptr& o) {
 		const double t = mrpt::Clock::toDouble(o->timestamp);
 		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o);
-			s && s->sensorLabel != "FUSED")
+			s && s->sensorLabel != lvf::common::kFusedScanLabel)
 			allScans.push_back({at, t, o->timestamp, o->sensorLabel, s->getScanSize()});
 		else if (std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(o))
 			allStereos.push_back({at, t, o->timestamp, o->sensorLabel});

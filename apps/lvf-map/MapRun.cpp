@@ -1,6 +1,7 @@
 #include "MapRun.h"
 
 #include <lvfusion/common/InputError.h>
+#include <lvfusion/common/ObservationLabels.h>
 #include <lvfusion/common/OdometryReadings.h>
 #include <lvfusion/common/RawlogReader.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -11,7 +12,7 @@ using mrpt::obs::CObservation2DRangeScan;
 
 namespace
 {
-bool isFused(const CObservation2DRangeScan& s) { return s.sensorLabel == "FUSED"; }
+bool isFused(const CObservation2DRangeScan& s) { return s.sensorLabel == lvf::common::kFusedScanLabel; }
 
 mrpt::obs::CActionCollection::Ptr odometryAction(
 	const mrpt::poses::CPose2D& increment,

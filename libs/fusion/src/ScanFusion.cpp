@@ -1,5 +1,6 @@
 #include <lvfusion/common/IniSection.h>
 #include <lvfusion/common/LaserRange.h>
+#include <lvfusion/common/ObservationLabels.h>
 #include <lvfusion/fusion/NarrowGapBridging.h>
 #include <lvfusion/fusion/ScanFusion.h>
 #include <mrpt/core/bits_math.h>
@@ -189,7 +190,7 @@ mrpt::obs::CObservation2DRangeScan::Ptr ScanFusion::fuse(
 	const mrpt::obs::CObservation2DRangeScan& laser, const std::vector<float>& visual)
 {
 	auto fused = std::make_shared<mrpt::obs::CObservation2DRangeScan>(laser);
-	fused->sensorLabel = "FUSED";
+	fused->sensorLabel = lvf::common::kFusedScanLabel;
 	for (size_t i = 0; i < fused->getScanSize(); i++)
 	{
 		if (i < visual.size() && visual[i] < laserRangeOrMax(laser, i))
