@@ -122,7 +122,8 @@ class LvfMap : public CliTest
 	/** A 6 m x 4 m room centred on the origin, the robot driven from (-2, -0.5)
 	 * to (2, 0.5): NAME.rawlog (observations layout) and NAME_gt_poses.txt.
 	 * `boxes`: the world file's boxes: list, if any. */
-	void simulateSmallRoom(const std::string& name, const std::string& boxes = "")
+	void simulateSmallRoom(
+		const std::string& name, const std::string& boxes = "", const std::string& waypoints = "[[-2, -0.5], [2, 0.5]]")
 	{
 		write(name + ".yaml", "name: " + name + R"(
 walls:
@@ -132,7 +133,7 @@ walls:
   - {name: west, from: [-3, -2], to: [-3, 2]}
 )" + boxes + R"(
 path:
-  waypoints: [[-2, -0.5], [2, 0.5]]
+  waypoints: )" + waypoints + R"(
   step: 0.25
 )");
 		ASSERT_EQ(run(kSimulate, "--world " + name + ".yaml --outdir . --format obs -q").status, 0);
@@ -374,6 +375,27 @@ TEST_F(LvfMap, ImagePriorMapLocalisesWithinTargets)
 	std::printf("image prior map: median error %.3f m, %.2f deg over %zu poses\n", e.medianPosition,
 				mrpt::RAD2DEG(e.medianHeading), e.matched);
 	EXPECT_EQ(e.matched, 18u);
+	EXPECT_LT(e.medianPosition, 0.05);
+	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
+}
+
+TEST_F(LvfMap, ChoosingFreeCellsAloneKeepsTheDefaultInitialBox)
+{
+	// pf-localization's init_PDF_mode = 0 spreads the particles over the
+	// free cells of the initial box; a file that says only that keeps the
+	// default box (+-0.2 m, +-5 deg round the origin), where this robot
+	// starts. (Once the mode key was taken for a key of the box, which
+	// left a box of no area: MRPT's assertion on "nFreeCells".)
+	simulateSmallRoom("origin_room", "", "[[0, 0], [2.5, 0]]");
+	cv::Mat1b plan(84, 124, uchar(127));
+	plan(cv::Rect(1, 1, 122, 82)) = 0;
+	plan(cv::Rect(3, 3, 118, 78)) = 255;
+	cv::imwrite((m_dir / "plan.png").string(), plan);
+	write("free_cells.ini", "[LocalizationExperiment]\ninit_PDF_mode = 0\n");
+	const auto r = run(kMap, "--input origin_room.rawlog --map plan.png --config free_cells.ini --outdir out");
+	ASSERT_EQ(r.status, 0) << r.err;
+	const auto e = localisationError(m_dir / "out/origin_room_poses.txt", m_dir / "origin_room_gt_poses.txt");
+	EXPECT_EQ(e.matched, 11u);
 	EXPECT_LT(e.medianPosition, 0.05);
 	EXPECT_LT(e.medianHeading, mrpt::DEG2RAD(1.0));
 }
@@ -636,6 +658,8 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 	write("beta.ini", "[PF_options]\nBETA = nan\n");
 	write("floor.ini", "[DummyOdometryParams]\nminStdXY = -1\n");
 	write("no_map.ini", "[MetricMap]\noccupancyGrid_count = 0\n");
+	write("off_map.ini", "[LocalizationExperiment]\ninit_PDF_mode = 0\ninit_PDF_min_x = 100\ninit_PDF_max_x = 101\n");
+	const std::string truthMap = std::string(LVF_SAMPLES_DIR) + "/corridor_desk_obstacles.gridmap.gz";
 	const std::vector<std::pair<std::string, std::string>> cases{
 		{"--input " + sample + " --map prior.txt", "prior.txt: unknown map format '.txt'"},
 		{"--input " + sample + " --map prior", "prior: no file extension to tell the map format"},
@@ -669,6 +693,9 @@ TEST_F(LvfMap, BadInputIsOneLineAndNothingWritten)
 		{"--input " + sample + " --config floor.ini", "floor.ini: [DummyOdometryParams] minStdXY: -1 is out of range"},
 		{"--input " + sample + " --config no_map.ini",
 			"no_map.ini: [MetricMap] occupancyGrid_count: no occupancy grid or points map"},
+		{"--input " + sample + " --map " + truthMap + " --config off_map.ini",
+			"off_map.ini: [LocalizationExperiment] init_PDF_min_*, init_PDF_max_*: the initial box x [100, 101] m, y [0, 0] m "
+			"holds no free cell of the prior map"},
 	};
 	for (const auto& [args, message] : cases)
 	{

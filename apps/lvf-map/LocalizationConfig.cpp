@@ -172,7 +172,8 @@ void GlobalMapsOptions::saveToConfigFile(mrpt::config::CConfigFileBase& c, const
 LocalizationConfig LocalizationConfig::load(const std::string& path)
 {
 	LocalizationConfig c;
-	const std::string source = path.empty() ? "<defaults>" : path;
+	if (!path.empty()) c.source = path;
+	const std::string& source = c.source;
 	c.pfSections.setContent(std::string(kDefaultPfSections));
 	std::unique_ptr<mrpt::config::CConfigFile> user;
 	if (!path.empty())
@@ -220,7 +221,11 @@ void LocalizationConfig::readExperiment(const mrpt::config::CConfigFileBase& cfg
 	// A file that gives any of the initial box gives all of it, with
 	// pf-localization's defaults (0 m, +-180 deg) for what it leaves out.
 	const auto keys = lvf::common::keyNames(cfg, kExperiment);
-	if (std::any_of(keys.begin(), keys.end(), [](const std::string& k) { return k.rfind("init_PDF_m", 0) == 0; }))
+	// (init_PDF_mode, the box's use, is no part of it.)
+	const auto isBoxKey = [](const std::string& k) {
+		return k.rfind("init_PDF_min_", 0) == 0 || k.rfind("init_PDF_max_", 0) == 0;
+	};
+	if (std::any_of(keys.begin(), keys.end(), isBoxKey))
 	{
 		initMin = {0, 0, -M_PI};
 		initMax = {0, 0, M_PI};

@@ -57,6 +57,7 @@ struct LocalizationConfig
 	std::string mapFile;  //!< map_file; a relative one from the current folder, else resolved against the .ini's folder
 	GlobalMapsOptions globalMaps;
 	lvf::planning::ValueIterationPlanner::TOptions planner;
+	std::string source = "<defaults>";  //!< the file read, as errors found later name it
 
 	/** Defaults, with `path` (if not empty) over them; throws InputError
 	 * naming the file, section and key of anything wrong. */

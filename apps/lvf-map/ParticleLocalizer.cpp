@@ -1,6 +1,7 @@
 #include "ParticleLocalizer.h"
 
 #include <lvfusion/common/InputError.h>
+#include <mrpt/core/format.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 namespace lvf::apps
@@ -18,10 +19,24 @@ ParticleLocalizer::ParticleLocalizer(
 		if (!grid)
 			throw lvf::common::InputError(
 				"[LocalizationExperiment] init_PDF_mode", "", "0 (free cells) needs an occupancy grid in [MetricMap]");
-		// 0.7: pf-localization's threshold for "free" cells.
-		m_pdf.resetUniformFreeSpace(
-			grid.get(), 0.7f, static_cast<int>(config.particles), initMin.x, initMax.x, initMin.y, initMax.y,
-			initMin.phi, initMax.phi);
+		// 0.7: pf-localization's threshold for "free" cells. MRPT asserts
+		// that the box holds some; a box off the map's free space is the
+		// user's to fix, so it is told as such.
+		try
+		{
+			m_pdf.resetUniformFreeSpace(
+				grid.get(), 0.7f, static_cast<int>(config.particles), initMin.x, initMax.x, initMin.y, initMax.y,
+				initMin.phi, initMax.phi);
+		}
+		catch (const std::exception& e)
+		{
+			throw lvf::common::InputError(
+				config.source, "[LocalizationExperiment] init_PDF_min_*, init_PDF_max_*",
+				mrpt::format(
+					"the initial box x [%g, %g] m, y [%g, %g] m holds no free cell of the prior map (init_PDF_mode = "
+					"0 spreads the particles over those): %s",
+					initMin.x, initMax.x, initMin.y, initMax.y, lvf::common::exceptionMessage(e).c_str()));
+		}
 	}
 	else
 		m_pdf.resetUniform(
