@@ -105,6 +105,7 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 	const auto noSection = write("nosec.ini", "max_range = 8\n");
 	const auto badHeader = write("header.ini", "[SimulatedLaser\nmax_range = 8\n");
 	const auto twice = write("twice.ini", "[SimulatedLaser]\nmax_range = 8\n\nmax_range = 9\n");
+	const auto oneRay = write("oneray.ini", "[SimulatedLaser]\naperture_deg = 1\nresolution_deg = 5\n");
 	const auto escaping = write("escape.yaml", "name: ../escape\nboxes: []\npath: {poses: [[0,0,0]]}\n");
 
 	const std::vector<std::tuple<std::string, std::string>> cases{
@@ -127,6 +128,8 @@ TEST_F(LvfSimulateCli, EveryBadInputIsOneLineExitTwoAndNothingWritten)
 		{"--no-such-flag", "command line"},
 		{"--world " + goodWorld + " --config " + twice.string(), "twice.ini: line 4: [SimulatedLaser] max_range: given twice (first on line 2)"},
 		{"--world " + goodWorld + " --seed -5", "--seed: must be >= 0"},
+		{"--world " + goodWorld + " --config " + oneRay.string(),
+			"oneray.ini: [SimulatedLaser] resolution_deg: 5 leaves a single ray in an aperture of 1 deg: must be at most 2"},
 		// Names become file names in the output folder: nothing outside it.
 		{"--world " + goodWorld + " --name ../escape", "--name: '../escape' must be a plain file name"},
 		{"--world " + goodWorld + " --name a/b", "--name: 'a/b' must be a plain file name"},

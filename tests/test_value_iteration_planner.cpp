@@ -137,6 +137,19 @@ TEST(ValueIterationPlanner, GapNarrowerThanTheRobotIsUnreachable)
 	EXPECT_TRUE(ValueIterationPlanner(small).plan(g, {2, 2}, {8, 2}).found());
 }
 
+TEST(ValueIterationPlanner, ASweepBoundTooLowIsToldApartFromNoPath)
+{
+	// Round the end of a wall the values need more than one sweep: with
+	// max_sweeps 1 there is no path yet, which is no proof there is none.
+	const auto g = wallWithGap(7.0, 8.0);
+	ValueIterationPlanner::TOptions one;
+	one.maxSweeps = 1;
+	const auto r = ValueIterationPlanner(one).plan(g, {2, 2}, {8, 2});
+	EXPECT_EQ(r.outcome, PlanOutcome::SweepsExhausted) << describe(r.outcome);
+	EXPECT_FALSE(r.converged);
+	EXPECT_TRUE(ValueIterationPlanner().plan(g, {2, 2}, {8, 2}).found());
+}
+
 TEST(ValueIterationPlanner, BadStartsAndGoalsAreReported)
 {
 	const auto g = wallWithGap(7.0, 8.0);

@@ -79,16 +79,14 @@ Attempt planWithGrowth(
 	const mrpt::maps::COccupancyGridMap2D& map, const TPoint2D& robot, const TPoint2D& target,
 	const GuidanceOptions& o, double growth)
 {
-	lvf::planning::ValueIterationPlanner::TOptions po;
-	po.robotRadius = growth;
-	po.obstacleBelow = o.occupiedBelow;
 	Attempt a;
 	a.grid = std::make_shared<TraversableGrid>(map, growth, o.occupiedBelow);
 	const TraversableGrid& grid = *a.grid;
 	const auto from = snap(grid, robot, o.snapRadius), to = snap(grid, target, o.snapRadius);
 	if (!from) a.blocked = mrpt::format("the robot at (%.2f, %.2f) has no free cell within %.2f m", robot.x, robot.y, o.snapRadius);
 	else if (!to) a.blocked = mrpt::format("the target (%.2f, %.2f) has no free cell within %.2f m", target.x, target.y, o.snapRadius);
-	else a.plan = lvf::planning::ValueIterationPlanner(po).plan(grid, *from, *to);
+	// The grid is grown already: the planner's own growth options play no part.
+	else a.plan = lvf::planning::ValueIterationPlanner().plan(grid, *from, *to);
 	return a;
 }
 

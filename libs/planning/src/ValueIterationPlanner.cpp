@@ -34,6 +34,8 @@ std::string describe(PlanOutcome outcome)
 	{
 		case PlanOutcome::Found: return "path found";
 		case PlanOutcome::Unreachable: return "no collision-free path joins start and goal";
+		case PlanOutcome::SweepsExhausted:
+			return "value iteration stopped at its sweep bound (max_sweeps) before it converged: no path yet";
 		case PlanOutcome::StartOutsideMap: return "the start is outside the map";
 		case PlanOutcome::GoalOutsideMap: return "the goal is outside the map";
 		case PlanOutcome::StartBlocked: return "the start is inside an obstacle (grown by the robot radius)";
@@ -66,7 +68,10 @@ ValueIterationPlanner::Result ValueIterationPlanner::plan(
 	r.sweeps = vf.sweeps;
 	r.converged = vf.converged;
 	const cv::Mat1f& v = vf.value;
-	if (!std::isfinite(v(from.y, from.x))) return r;  // Unreachable
+	// Unreachable, unless the sweeps stopped before the values settled.
+	const PlanOutcome notFound = vf.converged ? PlanOutcome::Unreachable : PlanOutcome::SweepsExhausted;
+	r.outcome = notFound;
+	if (!std::isfinite(v(from.y, from.x))) return r;
 	r.costToGo = v(from.y, from.x);
 
 	// Descend: the move minimising cost + V; at the fixed point that sum
@@ -94,7 +99,11 @@ ValueIterationPlanner::Result ValueIterationPlanner::plan(
 		here = best;
 		if (!(here == to)) r.path.push_back(grid.centreOf(here));
 	}
-	if (!(here == to)) return r;  // Unreachable within the sweep budget
+	if (!(here == to))
+	{
+		r.path.clear();	 // no half path beside an outcome that is no path
+		return r;
+	}
 	r.path.push_back(goal);
 	r.outcome = PlanOutcome::Found;
 	return r;

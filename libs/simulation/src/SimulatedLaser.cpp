@@ -1,6 +1,8 @@
 #include <lvfusion/common/IniSection.h>
+#include <lvfusion/common/InputError.h>
 #include <lvfusion/simulation/SimulatedLaser.h>
 #include <mrpt/core/bits_math.h>
+#include <mrpt/core/format.h>
 #include <opencv2/core.hpp>
 
 #include <cmath>
@@ -15,6 +17,13 @@ void SimulatedLaser::TOptions::loadFromConfigFile(
 	lvf::common::IniSection ini(source, section);
 	apertureDeg = ini.real("aperture_deg", apertureDeg, 1, 360);
 	resolutionDeg = ini.real("resolution_deg", resolutionDeg, 0.01, 90);
+	// A scan's rays are spread over its aperture (MRPT's convention): one
+	// ray would have no spacing.
+	if (rayCount() < 2)
+		throw lvf::common::InputError(
+			ini.sourceName(), "[" + section + "] resolution_deg",
+			mrpt::format("%g leaves a single ray in an aperture of %g deg: must be at most %g", resolutionDeg, apertureDeg,
+						 2 * apertureDeg));
 	maxRange = ini.real("max_range", maxRange, 0.1, 200);
 	noiseStd = ini.real("noise_std", noiseStd, 0, 1);
 	poseX = ini.real("pose_x", poseX);

@@ -17,6 +17,7 @@ enum class PlanOutcome
 {
 	Found,
 	Unreachable,  //!< no traversable path links start and goal
+	SweepsExhausted,  //!< max_sweeps ran out before the values reached the start
 	StartOutsideMap,
 	GoalOutsideMap,
 	StartBlocked,  //!< the robot's disc at the start overlaps an obstacle

@@ -31,7 +31,10 @@
 //    why), cut at the target's TP distance + safety_distance: beyond the
 //    target a trajectory's obstacle does not keep the robot from it;
 //  - no valley: retried with half the safety distance, then a quarter
-//    (safety_fallback);
+//    (safety_fallback); each level is a VFH+ engine of its own, so a
+//    fallback's hysteresis and previous direction are those of the last
+//    cycle that used it, not of the last cycle (a level below decided in
+//    between: the approximation above, over more steps);
 //  - speed: VFH's law, times a linear slow-down near the target (as MRPT's
 //    VFF); zero when every direction is blocked at every safety level.
 // One method object exists per PTG, so each keeps its own VFH+ state.
