@@ -126,7 +126,7 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 		f.stereoDelay = best->t - s.t;
 		f.scanTime = s.t;
 		f.scanBearings = s.rays;
-		f.odometry = odometry.latestNotAfter(s.stamp).value_or(poseAtEntry[s.at.entry]);
+		f.odometry = odometry.empty() ? poseAtEntry[s.at.entry] : odometry.poseAt(s.stamp);
 		out.frames.push_back(f);
 	}
 	return out;

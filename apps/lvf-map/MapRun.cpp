@@ -121,7 +121,7 @@ MapRun loadMapRun(
 	{
 		auto& step = run.steps[i];
 		const auto t = step.laser->timestamp;
-		step.odometry = readings.latestNotAfter(t).value_or(usedOdometry);
+		step.odometry = odometryReadings ? readings.poseAt(t) : usedOdometry;
 		step.action = odometryAction(step.odometry - usedOdometry, obsOnlyModel, t);
 		usedOdometry = step.odometry;
 	}

@@ -1,7 +1,7 @@
 #pragma once
 // A rawlog's odometry readings (CObservationOdometry, the observations
 // layout) and the pose they give at a scan. lvf-fuse and lvf-map both place
-// each scan at the latest reading not after it. A reading may follow its
+// each scan at the latest reading not after it (the first, before it). A reading may follow its
 // scan in the file and a log merged from several sources need not be in time
 // order, so the readings are kept sorted by time and looked up by binary
 // search: a real robot's log holds tens of thousands of them.
@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -30,13 +29,15 @@ class OdometryReadings
 	bool empty() const { return readings_.empty(); }
 
 	/** The pose of the latest reading not after `t` (within a microsecond:
-	 * logs store times as doubles), or none if every reading is later. */
-	std::optional<mrpt::poses::CPose2D> latestNotAfter(mrpt::Clock::time_point t) const
+	 * logs store times as doubles). Before the first reading, the first: a
+	 * scan taken just before the odometry started is where that reading
+	 * puts the robot, not at the origin of some other frame. The readings
+	 * must not be empty. */
+	const mrpt::poses::CPose2D& poseAt(mrpt::Clock::time_point t) const
 	{
 		const auto next =
 			std::upper_bound(readings_.begin(), readings_.end(), t + std::chrono::microseconds(1), laterThan);
-		if (next == readings_.begin()) return std::nullopt;
-		return std::prev(next)->second;
+		return next == readings_.begin() ? next->second : std::prev(next)->second;
 	}
 
 	/** The earliest reading's pose; the readings must not be empty. */
