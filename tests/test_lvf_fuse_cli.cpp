@@ -352,7 +352,7 @@ TEST_F(LvfFuseCli, TheSameOutputsOnOneThreadAsOnSeveral)
 TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 {
 	// Frame k is spoiled in way k; frame 0 and the last one are good.
-	const auto log = writeLog("spoilt.rawlog", 14, [](size_t k, CStereoLaserSimulator::Frame& f) {
+	const auto log = writeLog("spoilt.rawlog", 15, [](size_t k, CStereoLaserSimulator::Frame& f) {
 		auto& s = *f.stereo;
 		auto& scan = *f.scan;
 		switch (k)
@@ -382,6 +382,7 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 			// A laser mounted 1e180 m off (fuzz_fusion_frame): MRPT's grid
 			// would assert (abort) growing to take it in.
 			case 12: scan.sensorPose.y(1e180); break;
+			case 13: scan.aperture = 0; break;
 			default: break;
 		}
 	});
@@ -403,14 +404,15 @@ TEST_F(LvfFuseCli, EachBadFrameIsOneWarningAndTheRestIsFused)
 		"frame 11: cameraPose: not a finite pose: (x y z qr qx qy qz) = (nan ",
 		"frame 12: scan LASER: its pose (odometry and sensor pose) is not finite or lies more than 1000 m outside the "
 		"grids: left out of them",
+		"frame 13: scan LASER: aperture 0 rad: must be positive and finite (laser only)",
 	};
 	EXPECT_EQ(countLines(r.err), expected.size()) << r.err;
 	for (const auto& e : expected)
 		EXPECT_NE(r.err.find("lvf-fuse: warning: " + log.string() + ": " + e), std::string::npos) << e << "\n" << r.err;
 	EXPECT_NE(r.err.find("% of the judged pixels inconsistent): stereo calibration suspect, laser only"), std::string::npos);
-	EXPECT_NE(r.out.find("14 fused frames"), std::string::npos) << r.out;
+	EXPECT_NE(r.out.find("15 fused frames"), std::string::npos) << r.out;
 	const auto info = run(LVF_RAWLOG_EDIT, "--info -i out/spoilt_fused.rawlog");
-	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 14);
+	EXPECT_EQ(labelCounts(info.out).at("FUSED"), 15);
 }
 
 TEST_F(LvfFuseCli, ScansWithoutAStereoPairInTimeAreCountedAndReported)

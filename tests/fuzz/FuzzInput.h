@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -17,11 +18,13 @@
 
 namespace lvf::fuzz
 {
-/** A file holding `data`, one per process, rewritten for each input. */
+/** A file holding `data`, one per process, rewritten for each input, in
+ * TMPDIR (scripts/fuzz.sh points it into its build folder and empties it:
+ * libFuzzer's -fork children end without a chance to remove their file). */
 inline const std::string& inputFile(const uint8_t* data, size_t size, const char* suffix)
 {
 	static const std::string path =
-		"/tmp/lvf-fuzz-" + std::to_string(::getpid()) + suffix;
+		(std::filesystem::temp_directory_path() / ("lvf-fuzz-" + std::to_string(::getpid()) + suffix)).string();
 	std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
 	return path;
 }

@@ -6,6 +6,7 @@
 
 #include <lvfusion/common/InputError.h>
 #include <lvfusion/common/LaserRange.h>
+#include <mrpt/core/format.h>
 
 #include <chrono>
 #include <cmath>
@@ -137,6 +138,12 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 {
 	if (rawScan.getScanSize() == 0)
 		throw lvf::common::InputError(record, "scan " + rawScan.sensorLabel, "has no rays");
+	// The bearings are spread over the aperture: without one, every stage's
+	// ray index would divide by zero.
+	if (rawScan.getScanSize() > 1 && !(std::isfinite(rawScan.aperture) && rawScan.aperture > 0))
+		throw lvf::common::InputError(
+			record, "scan " + rawScan.sensorLabel,
+			mrpt::format("aperture %g rad: must be positive and finite", static_cast<double>(rawScan.aperture)));
 	// Ranges a driver should never report are invalid, said once per frame.
 	mrpt::obs::CObservation2DRangeScan scan(rawScan);
 	size_t bad = 0, valid = 0;
