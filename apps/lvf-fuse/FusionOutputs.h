@@ -20,8 +20,9 @@
 
 namespace lvf::apps
 {
-/** The evaluation picture of a frame (label EVAL): inconsistent pixels red,
- * unjudged blue, visual obstacle points yellow. */
+/** The evaluation picture of a frame (label EVAL): the model check's tints
+ * (inconsistent red, unmodelled magenta, unjudged blue), then the search's
+ * pixels: rejected orange, visual obstacle points yellow. */
 mrpt::obs::CObservationImage::Ptr evaluationImage(
 	const lvf::fusion::CLaserStereoFusion::Result& r, mrpt::Clock::time_point stamp);
 

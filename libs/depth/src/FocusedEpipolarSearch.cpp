@@ -213,9 +213,11 @@ void FocusedEpipolarSearch::searchRows(
 			const double column =
 				frame.refinement.refine(full.left, full.right, u, v, m.x + shift, m_options.subpixelIterations);
 			const double disparity = u + g.cxOffset - column;
-			if (disparity <= 0) continue;
-			const Eigen::Vector3d p = C + (fB / disparity) * ray;
-			if (!band.contains(p.z()))
+			// Refined to no disparity, the point would lie at infinity (or
+			// behind the cameras): no depth in the band either.
+			const bool finite = disparity > 0;
+			const Eigen::Vector3d p = finite ? Eigen::Vector3d(C + (fB / disparity) * ray) : C;
+			if (!finite || !band.contains(p.z()))
 			{
 				mark(SearchOutcome::OutOfBand, stats.rejectedOutOfBand);
 				continue;

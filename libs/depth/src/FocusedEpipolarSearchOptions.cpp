@@ -54,7 +54,7 @@ void FocusedEpipolarSearch::TOptions::saveToConfigFile(
 	writeOption(c, s, "z_min", zMin, "nearest depth searched [m]; the search's work grows with f * baseline / z_min, the disparity it reaches (0.3 m: 180 px on the simulated rig, 640 on Middlebury Motorcycle's)");
 	writeOption(c, s, "z_max", zMax, "farthest depth searched [m]");
 	writeOption(c, s, "bound_by_height_band", boundByBand, "search only depths whose point lies in the robot height band");
-	writeOption(c, s, "pixel_stride", pixelStride, "search every n-th inconsistent pixel along rows and columns");
+	writeOption(c, s, "pixel_stride", pixelStride, "search the inconsistent and unmodelled pixels of a grid of this step along rows and columns");
 	writeOption(c, s, "nearest_first_levels", nearestFirstLevels, "search every 2^L-th grid row first, then the rows halfway between, and so on; a later pass searches a pixel only in front of what earlier passes found on its bearing (the fused scan keeps a bearing's nearest obstacle); 0: every grid row in one pass");
 	writeOption(c, s, "nearest_first_points", nearestFirstPoints, "the points earlier passes must have found on a bearing before it is bounded, at the nearest_first_points-th nearest of them");
 	writeOption(c, s, "accept_ncc", acceptNcc, "a match must score at least this NCC [-1..1]");

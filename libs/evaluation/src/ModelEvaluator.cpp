@@ -33,7 +33,7 @@ void ModelEvaluator::TOptions::loadFromConfigFile(
 void ModelEvaluator::TOptions::saveToConfigFile(
 	mrpt::config::CConfigFileBase& c, const std::string& s) const
 {
-	writeOption(c, s, "window_size", windowSize, "NCC window side, odd [px]");
+	writeOption(c, s, "window_size", windowSize, "NCC window side of the model check and of the depth search's matching, odd [px]");
 	writeOption(c, s, "ncc_threshold", nccThreshold, "NCC below this: the model is wrong there [-1..1]");
 	writeOption(c, s, "texture_noise_ratio", textureNoiseRatio, "window std below this many times the image's noise (estimated per frame): untextured, not judged");
 	writeOption(c, s, "min_texture_std", minTextureStd, "or below this, whatever the noise [grey levels]");

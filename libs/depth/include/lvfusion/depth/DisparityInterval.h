@@ -20,7 +20,6 @@ struct Interval
 {
 	double lo = 0, hi = -1;	 //!< [lo, hi] in pixels of disparity; empty if lo > hi
 	bool empty() const { return lo > hi; }
-	double width() const { return empty() ? 0 : hi - lo; }
 };
 
 /** Up to two disjoint disparity intervals, in increasing order. */

@@ -2,10 +2,11 @@
 // NCC of one left-image window against the right-image windows along its
 // epipolar line (the same row of the rectified pair), computed on demand and
 // cached, so that the search, the peak test and the verifications never score
-// a column twice. Window means and deviations come from box filters; only the
-// cross term is summed per column. Written by hand because OpenCV's
-// matchTemplate (TM_CCOEFF_NORMED) costs 3-4x more here: its per-call set-up
-// dominates for one 11x11 window against a strip of a few dozen columns.
+// a column twice. Window means and deviations come precomputed
+// (WindowStatistics.h); only the cross term is summed per column. Written by
+// hand because OpenCV's matchTemplate (TM_CCOEFF_NORMED) costs 3-4x more
+// here: its per-call set-up dominates for one 11x11 window against a strip of
+// a few dozen columns.
 
 #include <opencv2/core.hpp>
 

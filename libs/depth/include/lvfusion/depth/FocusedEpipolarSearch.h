@@ -63,7 +63,7 @@ struct DepthSearchStats
 	size_t skippedUntextured = 0;	//!< inconsistent pixels with too little texture to match
 	size_t skippedEmptyRange = 0;  //!< inconsistent pixels the criteria left nothing to search
 	size_t skippedBehindNearer = 0;	 //!< nearest first: pixels whose whole range lies behind what earlier passes found
-	size_t disparitiesTested = 0;  //!< NCC evaluations (both levels when coarse-to-fine)
+	size_t disparitiesTested = 0;  //!< NCC scores along the searched stretches (both levels when coarse-to-fine; not the left-right check's or the shifted windows')
 	size_t accepted = 0;  //!< matches kept (in the band)
 	size_t rejectedWeak = 0, rejectedNotPeak = 0, rejectedAmbiguous = 0, rejectedOutOfBand = 0;
 	size_t rejectedLeftRight = 0;  //!< failed the left-right check
@@ -111,7 +111,7 @@ class FocusedEpipolarSearch
 		bool criterionC = true;	 //!< Zmin <= Z <= Zmax
 		double zMin = 0.3, zMax = 5.0;	//!< [m]
 		bool boundByBand = true;  //!< only depths whose height is in the robot band
-		int pixelStride = 3;  //!< search every n-th inconsistent pixel per row and column
+		int pixelStride = 3;  //!< the step of the grid of pixels searched (those inconsistent or unmodelled), rows and columns
 		/** Search the grid's rows coarse rows first: every 2^L-th grid
 		 * row, then the rows halfway between, and so on down to every grid
 		 * row, where a pass after the first searches a pixel only in front

@@ -95,8 +95,8 @@ class HorizontalSurfaceGrowth
 		double minRangeStep = 0.02;
 		/** ...and at most this many grid strides apart on the column. */
 		int witnessStrides = 4;
-		/** ...and their height differs by at most this fraction of their
-		 * range. Down a horizontal surface's column the range changes fast
+		/** ...and their heights differ by at most this fraction of their
+		 * ranges' difference. Down a horizontal surface's column the range changes fast
 		 * and the height by noise only; down a vertical one (a table leg, a
 		 * box's side) the height changes by a pixel's worth a row and the
 		 * range by noise, which can pass the two bounds above: a back leg's
@@ -130,8 +130,10 @@ class HorizontalSurfaceGrowth
 	const TOptions& options() const { return m_options; }
 
    private:
-	/** Another point of the column, `step` rows farther from the walk's
-	 * direction, on the same height and farther from the robot. */
+	/** Another point of the column behind `p` as the walk goes (`step`,
+	 * +1 or -1, is the walk's direction down the rows), at most
+	 * witness_strides grid strides away, on the same height and farther
+	 * from the robot. */
 	bool hasWitness(
 		const VisualPoint& p, const std::vector<VisualPoint>& points, const std::vector<size_t>& column, int step,
 		int stride) const;

@@ -1,10 +1,11 @@
 #pragma once
 // The model check's NCC at the pixels of one grid row, from their exact
-// window sums (GridWindowSums), a row at a time: the formula of
-// ModelEvaluator::evaluate() in the same operations and order, so the same
-// values bit for bit, but with its divisions and square roots over whole
+// window sums (GridWindowSums), a row at a time: the per-pixel formula it
+// replaced, bit for bit, with its divisions and square roots over whole
 // arrays, where they run vectorised (pixel by pixel they took most of the
-// grid check's arithmetic).
+// grid check's arithmetic). Against ModelEvaluator::evaluate(), whose float
+// box filters round differently, it agrees to rounding (test_model_evaluation,
+// GridEvaluationJudgesItsPixelsLikeTheWholeImage).
 
 #include <lvfusion/evaluation/GridWindowSums.h>
 

@@ -33,6 +33,8 @@ enum class PixelState : uint8_t
 	Unmodelled = 4,
 	NotEvaluated = 5  //!< off the grid of evaluateGrid()
 };
+/** How many PixelState values there are (NotEvaluated is the last). */
+constexpr size_t kPixelStates = static_cast<size_t>(PixelState::NotEvaluated) + 1;
 
 /** Pixels (first + j stride, first + i stride) of an image, j and i from 0:
  * those evaluateGrid() judges (evaluate(): every pixel). */
@@ -60,12 +62,11 @@ struct ModelEvaluation
 	/** At pixel (v, u), which must be one of the grid's where a window fits
 	 * (PixelState other than NotEvaluated). */
 	float ncc(int v, int u) const { return gridNcc(grid.index(v), grid.index(u)); }
-	float leftMean(int v, int u) const { return gridLeftMean(grid.index(v), grid.index(u)); }
 	float leftStd(int v, int u) const { return gridLeftStd(grid.index(v), grid.index(u)); }
 
 	double noiseStd = 0;  //!< the left image's noise (ImageNoise.h) [grey levels]
 	double textureGate = 0;	 //!< windows whose std is below this were untextured [grey levels]
-	std::array<size_t, 6> counts{};	 //!< pixels per PixelState
+	std::array<size_t, kPixelStates> counts{};	//!< pixels per PixelState
 
 	size_t count(PixelState s) const { return counts[static_cast<size_t>(s)]; }
 };
@@ -141,8 +142,9 @@ class ModelEvaluator
 	TOptions m_options;
 };
 
-/** The left image with inconsistent pixels tinted red and pixels that could
- * not be judged (untextured, unverifiable) tinted blue (cf. paper Fig. 3c);
+/** The left image with inconsistent pixels tinted red, unmodelled ones (no
+ * model surface along the ray, searched like them) magenta and pixels that
+ * could not be judged (untextured, unverifiable) blue (cf. paper Fig. 3c);
  * pixels not evaluated are left as they are. */
 cv::Mat3b drawEvaluationOverlay(const cv::Mat1b& left, const ModelEvaluation& evaluation);
 
