@@ -43,12 +43,19 @@ mrpt::obs::CObservationImage::Ptr evaluationImage(
 	return obs;
 }
 
+// The grids start 10 m square round the odometry's origin and grow to take
+// in every scan inserted (MRPT grows them; GridInsertion.h bounds by how
+// much), so a long run is whole.
+constexpr float kInitialGridHalfSide = 5;  // [m]
+
 FusionOutputs::FusionOutputs(
 	lvf::common::StagedOutputFiles& files, const std::string& name, double gridResolution, bool writePoints)
 	: m_files(files),
 	  m_name(name),
-	  m_laserGrid(-5, 5, -5, 5, static_cast<float>(gridResolution)),
-	  m_fusedGrid(-5, 5, -5, 5, static_cast<float>(gridResolution))
+	  m_laserGrid(-kInitialGridHalfSide, kInitialGridHalfSide, -kInitialGridHalfSide, kInitialGridHalfSide,
+				  static_cast<float>(gridResolution)),
+	  m_fusedGrid(-kInitialGridHalfSide, kInitialGridHalfSide, -kInitialGridHalfSide, kInitialGridHalfSide,
+				  static_cast<float>(gridResolution))
 {
 	m_csv.open(files.stage(name + "_frames.csv"));
 	m_csv << "frame,timestamp,segments,noise_std,texture_gate,inconsistent_px,unmodelled_px,untextured_px,searched_px,ncc_evaluations,"

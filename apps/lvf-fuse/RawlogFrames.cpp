@@ -123,7 +123,6 @@ RawlogFrames planRawlogFrames(const std::string& path, double maxTimeDiff, const
 		FusionFrame f;
 		f.scanAt = s.at;
 		f.stereoAt = best->at;
-		f.stereoDelay = best->t - s.t;
 		f.scanTime = s.t;
 		f.scanBearings = s.rays;
 		f.odometry = odometry.empty() ? poseAtEntry[s.at.entry] : odometry.poseAt(s.stamp);

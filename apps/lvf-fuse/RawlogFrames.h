@@ -27,7 +27,6 @@ struct ObservationPlace
 struct FusionFrame
 {
 	ObservationPlace scanAt, stereoAt;
-	double stereoDelay = 0;	 //!< stereo minus scan timestamp [s]
 	double scanTime = 0;  //!< the scan's time stamp [s]
 	size_t scanBearings = 0;  //!< and its number of rays
 	mrpt::poses::CPose2D odometry;	//!< robot pose by odometry at the scan

@@ -27,6 +27,7 @@
 #include <lvfusion/plugin/registerAllClasses.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/format.h>
 #include <mrpt/system/CTicTac.h>
 
 #include <filesystem>
@@ -43,12 +44,15 @@ const std::string kApp = "lvf-fuse";
 const std::string kDefaultInput =
 	lvf::common::shippedFile("rawlog_samples/box_room.rawlog", std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog");
 
+constexpr double kDefaultMaxTimeDiff = 0.05;	 // [s]
+constexpr double kDefaultGridResolution = 0.05;	 // [m]
+
 /** The command line, checked. */
 struct Arguments
 {
 	std::string input, output, outdir, config, truth;
 	lvf::apps::SensorLabels labels;
-	double maxTimeDiff = 0.05, gridResolution = 0.05;
+	double maxTimeDiff = kDefaultMaxTimeDiff, gridResolution = kDefaultGridResolution;
 	size_t evalEvery = 1;
 	bool dumpConfig = false, quiet = false, verbose = false, points = false;
 	std::string threads;  //!< OpenCV's pool as set, for the summary ("2 threads")
@@ -86,10 +90,10 @@ std::optional<Arguments> parseArguments(int argc, char** argv)
 	TCLAP::ValueArg<std::string> argTruth("t", "truth", "Truth scans (CSV) to score against (default: IN_truth_scans.csv if it exists)", false, "", "FILE.csv", cmd);
 	TCLAP::ValueArg<std::string> argLaserLabel("", "laser-label", "Fuse the 2D scans of this sensor (sensorLabel; default: the log's only laser)", false, "", "LABEL", cmd);
 	TCLAP::ValueArg<std::string> argStereoLabel("", "stereo-label", "With the stereo pairs of this sensor (sensorLabel; default: the log's only stereo camera)", false, "", "LABEL", cmd);
-	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", "Pair a scan with a stereo pair at most this far apart in time [s] (default 0.05)", false, 0.05, "S", cmd);
+	TCLAP::ValueArg<double> argMaxDt("", "max-time-diff", mrpt::format("Pair a scan with a stereo pair at most this far apart in time [s] (default %g)", kDefaultMaxTimeDiff), false, kDefaultMaxTimeDiff, "S", cmd);
 	TCLAP::ValueArg<int> argEvalEvery("", "eval-every", "Add the evaluation picture (EVAL) of every N-th frame to the output rawlog; 0: none (default 1: every frame; a picture is about the size of a stereo pair)", false, 1, "N", cmd);
 	TCLAP::SwitchArg argPoints("", "points", "Also write NAME_points.csv: every visual point of every frame (pixel, disparity, NCC, robot-frame position, bearing and range from the laser, found by the search, grown or remembered); thousands of rows a frame", cmd);
-	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", "Occupancy grid cell size [m], 0.005 to 5 (default 0.05)", false, 0.05, "M", cmd);
+	TCLAP::ValueArg<double> argGridRes("", "grid-resolution", mrpt::format("Occupancy grid cell size [m], 0.005 to 5 (default %g)", kDefaultGridResolution), false, kDefaultGridResolution, "M", cmd);
 	lvf::common::ThreadsOption threads(cmd);
 	TCLAP::SwitchArg argDumpConfig("", "dump-config", "Print the complete configuration (defaults overridden by --config) and exit", cmd);
 	TCLAP::SwitchArg argQuiet("q", "quiet", "Print nothing but errors and warnings", cmd);

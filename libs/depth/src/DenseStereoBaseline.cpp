@@ -15,19 +15,26 @@ cv::Mat1f denseDisparity(
 	const double span = g.fB() / zMin - g.cxOffset - minDisparity;
 	const int numDisparities = 16 * static_cast<int>(std::ceil(std::max(16.0, span) / 16.0));
 	cv::Mat raw;
+	// The usual settings of OpenCV's own stereo_match sample and of its
+	// documentation (not tuned here): a 5-pixel SGBM block with the
+	// smoothness penalties P1 = 8 b^2 and P2 = 32 b^2 of one grey channel, a
+	// left-right tolerance of 1 px, uniqueness 10 %, speckles of up to 100
+	// pixels varying by at most 2 px removed; BM's 15-pixel block.
+	constexpr int kUniquenessPercent = 10;
 	if (matcher == DenseMatcher::SemiGlobal)
 	{
-		const int block = 5;
+		constexpr int block = 5, leftRightTolerance = 1, preFilterCap = 63, speckleWindow = 100, speckleRange = 2;
 		auto sgbm = cv::StereoSGBM::create(
-			minDisparity, numDisparities, block, 8 * block * block, 32 * block * block, 1, 63, 10,
-			100, 2, cv::StereoSGBM::MODE_SGBM_3WAY);
+			minDisparity, numDisparities, block, 8 * block * block, 32 * block * block, leftRightTolerance,
+			preFilterCap, kUniquenessPercent, speckleWindow, speckleRange, cv::StereoSGBM::MODE_SGBM_3WAY);
 		sgbm->compute(left, right, raw);
 	}
 	else
 	{
-		auto bm = cv::StereoBM::create(numDisparities, 15);
+		constexpr int block = 15;
+		auto bm = cv::StereoBM::create(numDisparities, block);
 		bm->setMinDisparity(minDisparity);
-		bm->setUniquenessRatio(10);
+		bm->setUniquenessRatio(kUniquenessPercent);
 		bm->compute(left, right, raw);
 	}
 	cv::Mat1f disparity;
