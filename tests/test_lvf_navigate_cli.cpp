@@ -49,6 +49,8 @@ TEST_F(LvfNavigateCli, BadInputIsOneLineAndWritesNothing)
 	expectBadInput("--batch 2 --room-kind attic", "--room-kind");
 	expectBadInput("--room-kind visible", "--room-kind: only for random rooms");  // the box room would run
 	expectBadInput("-r 3 --room-kind overhangs,visible", "--room-kind: a single run takes one room kind");
+	// A list's items are trimmed: the kinds parse, and only their number is wrong.
+	expectBadInput("-r 3 --room-kind 'overhangs, visible'", "--room-kind: a single run takes one room kind");
 	const auto bad = write("bad.ini", "[NavigationLoop]\ncontrol_period = 0.1\nno_such_key = 1\n");
 	expectBadInput("--config '" + bad.string() + "'", "no_such_key");
 	// MRPT's navigator reads this section itself: checked before it does.

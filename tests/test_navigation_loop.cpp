@@ -188,13 +188,24 @@ TEST_F(NavigationLoop, NaNPoseIsReportedWithoutRunning)
 	s = boxRoom();
 	s.target.y = INFINITY;
 	EXPECT_EQ(nav::runNavigation(s, setup(nav::Sensing::Laser)).metrics.outcome, Outcome::InvalidPose);
-	// Finite, but farther than any grid could reach: not run either.
+	// Finite, but farther than a grid could reach, or than a run could plan
+	// on ((900, 900): 3e8 cells, 3.7 s a control step and 6 GB before the
+	// check): not run either.
+	for (const double xy : {1e300, 900.0})
+	{
+		s = boxRoom();
+		s.target = {xy, xy};
+		const auto farOff = nav::runNavigation(s, setup(nav::Sensing::Laser)).metrics;
+		EXPECT_EQ(farOff.outcome, Outcome::InvalidPose) << xy;
+		EXPECT_EQ(farOff.cycles, 0u);
+		EXPECT_NE(farOff.detail.find("that the robot's grids would need"), std::string::npos) << farOff.detail;
+	}
+	// 100 m off is a run (about 4 million cells).
 	s = boxRoom();
-	s.target.x = 1e300;
-	const auto farOff = nav::runNavigation(s, setup(nav::Sensing::Laser)).metrics;
-	EXPECT_EQ(farOff.outcome, Outcome::InvalidPose);
-	EXPECT_EQ(farOff.cycles, 0u);
-	EXPECT_NE(farOff.detail.find("more than 1000 m outside the world"), std::string::npos) << farOff.detail;
+	s.target = {100, 3};
+	auto quick = setup(nav::Sensing::Laser);
+	quick.loop.timeout = 0.3;
+	EXPECT_EQ(nav::runNavigation(s, quick).metrics.outcome, Outcome::Timeout);
 }
 
 TEST_F(NavigationLoop, UnreachableTargetEndsWithinTheTimeBoundWithoutCollision)

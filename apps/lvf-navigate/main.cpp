@@ -84,10 +84,12 @@ std::string dumpConfig(const nav::NavigationSetup& setup)
 		out.getContent();
 }
 
+/** "a, b,c" -> {"a", "b", "c"}: a comma-separated option's items, trimmed. */
 std::vector<std::string> splitList(const std::string& text)
 {
 	std::vector<std::string> items;
 	mrpt::system::tokenize(text, ",", items);
+	for (auto& item : items) item = mrpt::system::trim(item);
 	return items;
 }
 
@@ -333,12 +335,9 @@ int run(int argc, char** argv)
 		if (argBatch.getValue() < 1) throw InputError("--batch", "", "must be >= 1");
 		if (argWorld.isSet() || argStart.isSet() || argTarget.isSet())
 			throw InputError("--batch", "", "runs random rooms: --world, --start and --target do not apply");
-		std::vector<std::string> methods = splitList(argMethods.getValue().empty() ? method : argMethods.getValue());
-		for (auto& m : methods)
-		{
-			m = mrpt::system::trim(m);
-			nav::requireHolonomicMethod(m, "--methods");
-		}
+		const std::vector<std::string> methods =
+			splitList(argMethods.getValue().empty() ? method : argMethods.getValue());
+		for (const auto& m : methods) nav::requireHolonomicMethod(m, "--methods");
 		const uint32_t firstSeed = argRandom.isSet() ? uint32_t(argRandom.getValue()) : 1;
 		return runBatch(argBatch.getValue(), firstSeed, kinds, methods, sensings, setup, argOutdir.getValue(), argQuiet.getValue());
 	}

@@ -20,10 +20,35 @@ Sensing parseSensing(const std::string& name, const std::string& source)
 
 namespace
 {
-constexpr double kMaxDistanceOutsideWorld = 1000;	// [m]
+/** The most cells the robot's grids may hold. Each guidance step plans on
+ * the whole grid: at 25 million cells (250 m square at 5 cm) a step takes
+ * about a third of a second; a target 900 m off took 3.7 s a step and 6 GB. */
+constexpr double kMaxGridCells = 25e6;
+
+struct Bounds
+{
+	double xMin, xMax, yMin, yMax;
+	double cells(double resolution) const { return (xMax - xMin) * (yMax - yMin) / (resolution * resolution); }
+};
+
+/** What the robot's grids cover: the world, the start and the target with a
+ * metre to spare (a target beyond the world's walls is still a cell the
+ * planner can find closed off). */
+Bounds gridBounds(const NavigationScenario& scenario)
+{
+	Bounds b;
+	scenario.world.footprintBounds(b.xMin, b.xMax, b.yMin, b.yMax, 1.0);
+	for (const auto& p : {mrpt::math::TPoint2D(scenario.start), scenario.target})
+	{
+		b.xMin = std::min(b.xMin, p.x - 1.0), b.xMax = std::max(b.xMax, p.x + 1.0);
+		b.yMin = std::min(b.yMin, p.y - 1.0), b.yMax = std::max(b.yMax, p.y + 1.0);
+	}
+	return b;
+}
 
 /** Checks a scenario can be run at all; fills `m` and returns false if not. */
-bool checkScenario(const NavigationScenario& s, const WorldCollision& collision, NavigationMetrics& m)
+bool checkScenario(
+	const NavigationScenario& s, const WorldCollision& collision, double gridResolution, NavigationMetrics& m)
 {
 	if (!finite(s.start) || !std::isfinite(s.target.x) || !std::isfinite(s.target.y))
 	{
@@ -31,18 +56,16 @@ bool checkScenario(const NavigationScenario& s, const WorldCollision& collision,
 		m.detail = "start " + s.start.asString() + " or target " + s.target.asString() + " is not finite";
 		return false;
 	}
-	// The robot's grids cover the world, the start and the target (gridFor):
-	// a point far off would ask for more cells than memory holds.
-	double xMin, xMax, yMin, yMax;
-	s.world.footprintBounds(xMin, xMax, yMin, yMax, kMaxDistanceOutsideWorld);
-	for (const auto& [what, p] : {std::pair{"start", mrpt::math::TPoint2D(s.start)}, std::pair{"target", s.target}})
-		if (p.x < xMin || p.x > xMax || p.y < yMin || p.y > yMax)
-		{
-			m.outcome = Outcome::InvalidPose;
-			m.detail = mrpt::format("the %s (%g, %g) lies more than %.0f m outside the world", what, p.x, p.y,
-				kMaxDistanceOutsideWorld);
-			return false;
-		}
+	// A start or target far off would ask for more cells than a run can plan on.
+	if (const double cells = gridBounds(s).cells(gridResolution); cells > kMaxGridCells)
+	{
+		m.outcome = Outcome::InvalidPose;
+		m.detail = mrpt::format(
+			"the start %s and the target (%g, %g) lie so far apart, or so far from the world, that the robot's grids "
+			"would need %.3g cells at grid_resolution %g m (at most %.3g)",
+			s.start.asString().c_str(), s.target.x, s.target.y, cells, gridResolution, kMaxGridCells);
+		return false;
+	}
 	if (const auto c = collision.clearance(mrpt::math::TPoint2D(s.start)); c.distance < 0)
 	{
 		m.outcome = Outcome::StartInCollision;
@@ -59,19 +82,11 @@ bool checkScenario(const NavigationScenario& s, const WorldCollision& collision,
 	return true;
 }
 
-/** The robot's grids, covering the world and the scenario's start and
- * target with a metre to spare: a target beyond the world's walls is still
- * a cell the planner can find closed off. */
 std::unique_ptr<LocalObstacleGrid> gridFor(const NavigationScenario& scenario, const NavigationLoopOptions& loop)
 {
-	double xMin, xMax, yMin, yMax;
-	scenario.world.footprintBounds(xMin, xMax, yMin, yMax, 1.0);
-	for (const auto& p : {mrpt::math::TPoint2D(scenario.start), scenario.target})
-	{
-		xMin = std::min(xMin, p.x - 1.0), xMax = std::max(xMax, p.x + 1.0);
-		yMin = std::min(yMin, p.y - 1.0), yMax = std::max(yMax, p.y + 1.0);
-	}
-	return std::make_unique<LocalObstacleGrid>(xMin, xMax, yMin, yMax, loop.gridResolution, loop.occupiedBelow, loop.visionObstacleMargin);
+	const Bounds b = gridBounds(scenario);
+	return std::make_unique<LocalObstacleGrid>(
+		b.xMin, b.xMax, b.yMin, b.yMax, loop.gridResolution, loop.occupiedBelow, loop.visionObstacleMargin);
 }
 
 }  // namespace
@@ -80,7 +95,7 @@ NavigationRun runNavigation(const NavigationScenario& scenario, const Navigation
 {
 	NavigationRun run;
 	const WorldCollision collision(scenario.world, scenario.world.robot);
-	if (!checkScenario(scenario, collision, run.metrics)) return run;
+	if (!checkScenario(scenario, collision, setup.loop.gridResolution, run.metrics)) return run;
 	run.grid = gridFor(scenario, setup.loop);
 	ClosedLoop(scenario, setup, collision, run).run();
 	return run;
