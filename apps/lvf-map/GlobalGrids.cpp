@@ -45,12 +45,9 @@ void GlobalGrids::finish()
 {
 	for (const auto& [cell, hits] : m_visualHits)
 		if (hits >= m_visualMinHits)
-		{
 			m_fused.setPos(
 				static_cast<float>((cell.first + 0.5) * m_resolution),
 				static_cast<float>((cell.second + 0.5) * m_resolution), 0.0f);
-			m_visualCells++;
-		}
 }
 
 cv::Mat3b drawPathsOnGrid(

@@ -33,7 +33,6 @@ class GlobalGrids
 		const mrpt::poses::CPose2D& pose);
 	/** Marks the visual obstacle cells occupied; call once, after every add(). */
 	void finish();
-	size_t visualObstacleCells() const { return m_visualCells; }
 
 	const mrpt::maps::COccupancyGridMap2D& laser() const { return m_laser; }
 	const mrpt::maps::COccupancyGridMap2D& fused() const { return m_fused; }
@@ -41,7 +40,7 @@ class GlobalGrids
 
    private:
 	mrpt::maps::COccupancyGridMap2D m_laser, m_fused;
-	size_t m_laserScans = 0, m_fusedScans = 0, m_visualCells = 0;
+	size_t m_laserScans = 0, m_fusedScans = 0;
 	double m_resolution;
 	int m_visualMinHits;
 	std::map<std::pair<int, int>, int> m_visualHits;	 // world cell -> bearings ending there

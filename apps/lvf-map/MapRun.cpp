@@ -67,7 +67,6 @@ MapRun loadMapRun(
 			readings.add(odo->timestamp, odo->odometry);
 		else if (auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(entry))
 		{
-			run.sensoryFrames = true;
 			if (auto move = actions->getBestMovementEstimation())
 			{
 				odometrySeen = true;

@@ -26,7 +26,6 @@ struct MapStep
 struct MapRun
 {
 	std::vector<MapStep> steps;
-	bool sensoryFrames = false;	 //!< actions/sensory-frames layout
 	size_t fusedScans = 0;
 };
 

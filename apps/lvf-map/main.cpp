@@ -31,11 +31,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <mrpt/system/CTicTac.h>
-#include <mrpt/system/filesystem.h>
 
-#include <algorithm>
-#include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -44,7 +40,6 @@ using mrpt::math::TPoint2D;
 namespace
 {
 const std::string kApp = "lvf-map";
-namespace fs = std::filesystem;
 
 /** The map the particles localise in, and where they start. */
 struct Prior
@@ -130,8 +125,8 @@ Localised localise(
 				*step.laser, pose, *priorGrid, priorGrid->insertionOptions.maxDistanceInsertion));
 		if (!grids.add(*step.laser, step.fused.get(), pose))
 			std::cerr << mrpt::format(
-				"%s: warning: scan %zu: its sensor pose on the robot at (%.3g, %.3g) is not finite or lies more than %.0f "
-				"m outside the maps: left out of them\n",
+				"%s: warning: scan %zu: its localised pose (%.3g, %.3g), or its sensor pose on the robot, is not finite or "
+				"lies more than %.0f m outside the maps: left out of them\n",
 				kApp.c_str(), k, pose.x(), pose.y(), lvf::common::kMaxGridGrowth);
 		if (!quiet) progress.update(k + 1);
 	}

@@ -62,7 +62,7 @@ void printBatchTable(const std::vector<BatchRow>& rows, std::ostream& out)
 		double time = 0, path = 0, commonPath = 0, clearance = 0, cycle = 0;
 	};
 	const auto common = worldsAllReached(rows);
-	// Sorted by room kind, then in the order methods and sensing came.
+	// Sorted by room kind, then method, then sensing, each by name.
 	std::map<std::tuple<std::string, std::string, std::string>, Group> groups;
 	for (const auto& r : rows)
 	{

@@ -75,13 +75,14 @@ void writeTrajectoryImage(
 		// The robot's belief: obstacle cells it sensed, orange where truth is
 		// free (phantoms), dark red over a true obstacle.
 		const auto& g = run.grid->geometry();
+		// A cell's side in pixels, rounded once, so cells tile without gaps.
+		const int side = std::max(1, static_cast<int>(std::lround(g.getResolution() * scale)));
 		for (int cy = 0; cy < int(g.getSizeY()); cy++)
 			for (int cx = 0; cx < int(g.getSizeX()); cx++)
 				if (run.grid->obstacle(cx, cy))
 				{
 					const auto p = px(g.idx2x(cx), g.idx2y(cy));
-					const int half = int(0.5 * g.getResolution() * scale);
-					const cv::Rect cell(p.x - half, p.y - half, 2 * half, 2 * half);
+					const cv::Rect cell(p.x - side / 2, p.y - side / 2, side, side);
 					const auto& c = canvas.at<cv::Vec3b>(std::clamp(p.y, 0, rows - 1), std::clamp(p.x, 0, canvas.cols - 1));
 					const auto color = c[0] > 128 ? cv::Scalar(80, 170, 255) : cv::Scalar(0, 0, 120);
 					cv::rectangle(canvas, cell & cv::Rect(0, 0, canvas.cols, rows), color, cv::FILLED);

@@ -19,7 +19,6 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/CTicTac.h>
-#include <mrpt/system/filesystem.h>
 
 #include <filesystem>
 #include <iostream>

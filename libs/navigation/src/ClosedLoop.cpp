@@ -20,8 +20,6 @@ using lvf::fusion::CLaserStereoFusion;
 
 namespace
 {
-/** A turn in place ends when the subgoal is this near straight ahead [rad]. */
-constexpr double kTurnUntil = M_PI / 6;
 /** A path point within this of one already looked at is not looked at again [m]. */
 constexpr double kLookedAtRadius = 0.3;
 /** A look ends when the point is this near the heading (the cameras see 35 degrees to each side). */
@@ -282,7 +280,7 @@ void ClosedLoop::drive()
 		// Plan afresh on what the turn saw, and start the navigator then.
 		if (m_lookAroundLeft <= 0) m_nextPlanTime = m_metrics.time + m_loop.controlPeriod, m_turning = true;
 	}
-	else if (m_guided && std::abs(bearing) > (m_turning ? kTurnUntil : mrpt::DEG2RAD(m_loop.turnInPlaceAboveDeg)))
+	else if (m_guided && std::abs(bearing) > mrpt::DEG2RAD(m_turning ? NavigationLoopOptions::kTurnEndsWithinDeg : m_loop.turnInPlaceAboveDeg))
 	{
 		turnOnTheSpot(bearing);
 		m_turning = true;
@@ -367,7 +365,6 @@ bool ClosedLoop::navigatorGoesOn()
 		return true;
 	if (m_guided)
 	{
-		if (state == mrpt::nav::CAbstractNavigator::NAV_ERROR) m.navigatorErrors++;
 		m_nextPlanTime = m.time;
 		return true;
 	}

@@ -30,7 +30,7 @@ void NavigationLoopOptions::loadFromConfigFile(
 	unseenMinHeight = ini.real("unseen_min_height", unseenMinHeight, 0, 10);
 	startSeenRadius = ini.real("start_seen_radius", startSeenRadius, 0, 100);
 	unreachableAfter = ini.real("unreachable_after", unreachableAfter, 0, 1e6);
-	turnInPlaceAboveDeg = ini.real("turn_in_place_above_deg", turnInPlaceAboveDeg, 30, 180);
+	turnInPlaceAboveDeg = ini.real("turn_in_place_above_deg", turnInPlaceAboveDeg, kTurnEndsWithinDeg, 180);
 	turnRateDegps = ini.real("turn_rate_degps", turnRateDegps, 1, 720);
 	lookAroundAtStart = ini.flag("look_around_at_start", lookAroundAtStart);
 	ini.rejectUnknownKeys();
@@ -52,7 +52,7 @@ void NavigationLoopOptions::saveToConfigFile(
 	writeOption(c, s, "guidance_period", guidancePeriod, "replan this often, and whenever the subgoal is reached [s]");
 	writeOption(c, s, "guidance_lookahead", guidanceLookahead, "the navigator's subgoal is at most this far along the planned path, in straight sight [m]");
 	writeOption(c, s, "guidance_clearance", guidanceClearance, "the path keeps this much more than the robot radius off obstacles (retried with half, then 0, if no path) [m]");
-	writeOption(c, s, "guidance_overhang_depth", guidanceOverhangDepth, "the plan keeps off cells vision never looked at within this distance of an obstacle only vision found: an overhang's unseen far part (dropped, before the clearance, if that closes every way; 0: off) [m]");
+	writeOption(c, s, "guidance_overhang_depth", guidanceOverhangDepth, "the plan keeps off cells vision never looked at within this distance of an obstacle only vision found: an overhang's unseen far part (with the full, then half the clearance; dropped if both close every way; 0: off) [m]");
 	writeOption(c, s, "navigator_keeps_off_assumed", navigatorKeepsOffAssumed, "while the plan keeps off those assumed cells at its full clearance, the navigator senses them as obstacles too (it cuts the path's corners, and round a floating box's unseen side the corner is the box)");
 	writeOption(c, s, "guidance_overhang_unseen", guidanceOverhangUnseen, "fused runs: those assumed cells also include the ones vision's 2D grid calls free but whose band column the cameras have not seen through (a ray under a floating box clears its cells in 2D; unseen_min_height)");
 	writeOption(c, s, "guidance_unseen_radius", guidanceUnseenRadius, "fused runs: the plan also keeps off cells this near the robot whose band column the cameras have not seen free (dropped with the overhang depth if that closes every way; 0: off) [m]");

@@ -411,7 +411,7 @@ std::vector<mrpt::math::TPose2D> samplePolyline(
 	const std::vector<mrpt::math::TPoint2D>& waypoints, double step)
 {
 	std::vector<mrpt::math::TPose2D> poses;
-	double carried = 0;	 // distance already walked past the last sample
+	double carried = 0;	 // where the next segment's first sample falls, from its start
 	for (size_t i = 0; i + 1 < waypoints.size(); i++)
 	{
 		const auto& a = waypoints[i];

@@ -37,9 +37,10 @@ struct GuidanceOptions
 	 * vision never looked at. The plan keeps off such cells within this
 	 * distance of a cell only vision found occupied, as if the object went
 	 * on that far (the random rooms' floating boxes are up to 0.7 m,
-	 * table tops 0.6-0.8 m deep). Where that closes every way, the plan
-	 * keeps the clearance instead (the clearance's own fall-backs come
-	 * after): measured, a robot squeezed through gaps between assumed parts
+	 * table tops 0.6-0.8 m deep). Where that closes every way at the full
+	 * clearance, the plan tries half the clearance, and only then drops the
+	 * assumption (the clearance's own fall-backs following, down to the bare
+	 * radius): measured, a robot squeezed through gaps between assumed parts
 	 * with the bare radius dithered until its timeout
 	 * (share/doc/lvfusion/measurements.md) [m]; 0: off. */
 	double overhangDepth = 0.6;

@@ -8,7 +8,7 @@
 // space must not erase what vision found; only vision looking again can. The
 // navigator is fed these cells rather than the last scan, so an overhang
 // stays an obstacle after it leaves the cameras' narrow view (the paper's
-// local map, Sec. 4). Optionally (trackSeenSpace) a third memory, in 3D:
+// local occupancy grid, Sects. 5-6). Optionally (trackSeenSpace) a third memory, in 3D:
 // where the cameras have seen through the robot's height band (SeenSpace.h),
 // for the plan to keep off what they have not.
 

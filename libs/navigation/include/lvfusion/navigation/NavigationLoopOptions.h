@@ -90,6 +90,10 @@ struct NavigationLoopOptions : public mrpt::config::CLoadableOptions
 	/** With guidance, the robot turns on the spot while the subgoal is more
 	 * than this off its heading (MRPT's forward PTGs cannot) [deg]. */
 	double turnInPlaceAboveDeg = 90;
+	/** A turn in place ends when the subgoal is this near straight ahead;
+	 * turn_in_place_above_deg may not be less (a turn would end as it
+	 * started) [deg]. */
+	static constexpr double kTurnEndsWithinDeg = 30;
 	double turnRateDegps = 60;	//!< that turn's rate [deg/s]
 	/** Before moving, the robot turns once on the spot at turnRateDegps,
 	 * sensing as it goes: its laser covers 180 degrees and its cameras 70,

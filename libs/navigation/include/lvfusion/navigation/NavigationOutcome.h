@@ -42,7 +42,6 @@ struct NavigationMetrics
 	double meanCycleMs = 0;	 //!< wall time per control cycle incl. sensing
 	size_t cycles = 0, sensingUpdates = 0;
 	size_t plans = 0;  //!< global-guidance plans made
-	size_t navigatorErrors = 0;	 //!< NAV_ERRORs the guidance recovered from by replanning
 	std::vector<mrpt::math::TPose2D> trajectory;  //!< true poses, one per cycle
 
 	bool reached() const { return outcome == Outcome::Reached; }

@@ -18,15 +18,14 @@ class SimulatedRobotInterface : public mrpt::nav::CRobot2NavInterfaceForSimulato
 	bool senseObstacles(
 		mrpt::maps::CSimplePointsMap& obstacles, mrpt::system::TTimeStamp& timestamp) override;
 
-	// The navigator's events, counted for the run's report.
-	void sendNavigationEndDueToErrorEvent() override { errorEvents++; }
-	void sendWaySeemsBlockedEvent() override { blockedEvents++; }
-	void sendCannotGetCloserToBlockedTargetEvent() override { blockedEvents++; }
+	// The navigator's events: the loop reads its state instead
+	// (ClosedLoop: NAV_ERROR and IDLE end a step's navigation).
+	void sendNavigationEndDueToErrorEvent() override {}
+	void sendWaySeemsBlockedEvent() override {}
+	void sendCannotGetCloserToBlockedTargetEvent() override {}
 	void sendNavigationStartEvent() override {}
 	void sendNavigationEndEvent() override {}
 	void sendApparentCollisionEvent() override {}
-
-	int errorEvents = 0, blockedEvents = 0;
 
    private:
 	mrpt::kinematics::CVehicleSimul_DiffDriven& m_vehicle;
