@@ -324,7 +324,9 @@ FocusedEpipolarSearch::Result FocusedEpipolarSearch::search(
 	}
 
 	// The grid's first and last columns, and as far beyond them as
-	// whole strides stay within half a window.
+	// whole strides stay within half a window: the columns searchRows'
+	// edge points (extendTo) reach, so that what reads these bounds (the
+	// fusion's image-edge test, the memory's view) agrees with the points.
 	const int lastGridColumn = half + ((W - 1 - 2 * half) / stride) * stride;
 	const int reach = (half / stride) * stride;
 	out.firstColumn = static_cast<float>(half - reach);

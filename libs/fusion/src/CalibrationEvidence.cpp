@@ -7,6 +7,13 @@ namespace lvf::fusion
 {
 using lvf::evaluation::PixelState;
 
+/** The model's surface at a pixel is the floor when its disparity is the
+ * floor's along that ray to this share: the floor computed two ways (the
+ * model's ray cast, the row's ray here) differs by rounding only. (The
+ * search asks the same of the point's height: FocusedEpipolarSearch.cpp's
+ * kOnTheFloor.) */
+constexpr double kFloorDisparityShare = 1e-3;
+
 CalibrationEvidence calibrationEvidence(
 	const lvf::evaluation::RectifiedGeometry& g, const lvf::evaluation::ModelEvaluation& evaluation,
 	double floorHeight, double agreeingNcc)
@@ -36,7 +43,7 @@ CalibrationEvidence calibrationEvidence(
 			const double down = -(r20 * g.rayX(u) + r21y + r22);
 			if (down <= 0) continue;
 			const double floorDisparity = g.fB() * down / height;
-			if (std::abs(evaluation.modelDisparity(v, u) - floorDisparity) > 1e-3 * floorDisparity) continue;
+			if (std::abs(evaluation.modelDisparity(v, u) - floorDisparity) > kFloorDisparityShare * floorDisparity) continue;
 			out.floorJudged++;
 			out.floorAgreeing += agrees;
 		}
