@@ -131,22 +131,30 @@ CLaserStereoFusion::Result CLaserStereoFusion::process(
 	return r;
 }
 
-CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
-	const mrpt::obs::CObservation2DRangeScan& rawScan,
-	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record,
-	const std::optional<mrpt::poses::CPose2D>& odometry)
+namespace
 {
-	if (rawScan.getScanSize() == 0)
-		throw lvf::common::InputError(record, "scan " + rawScan.sensorLabel, "has no rays");
+/** A frame's scan as the stages may use it: ranges a driver should never
+ * report (NaN, infinite, not positive) made invalid, said once in
+ * `warning`. A scan no stage can use at all throws. */
+struct CheckedScan
+{
+	mrpt::obs::CObservation2DRangeScan scan;
+	size_t valid = 0;  //!< rays left with a return
+	std::optional<std::string> warning;
+};
+
+CheckedScan checkedScan(const mrpt::obs::CObservation2DRangeScan& raw, const std::string& record)
+{
+	if (raw.getScanSize() == 0) throw lvf::common::InputError(record, "scan " + raw.sensorLabel, "has no rays");
 	// The bearings are spread over the aperture: without one, every stage's
 	// ray index would divide by zero.
-	if (rawScan.getScanSize() > 1 && !(std::isfinite(rawScan.aperture) && rawScan.aperture > 0))
+	if (raw.getScanSize() > 1 && !(std::isfinite(raw.aperture) && raw.aperture > 0))
 		throw lvf::common::InputError(
-			record, "scan " + rawScan.sensorLabel,
-			mrpt::format("aperture %g rad: must be positive and finite", static_cast<double>(rawScan.aperture)));
-	// Ranges a driver should never report are invalid, said once per frame.
-	mrpt::obs::CObservation2DRangeScan scan(rawScan);
-	size_t bad = 0, valid = 0;
+			record, "scan " + raw.sensorLabel,
+			mrpt::format("aperture %g rad: must be positive and finite", static_cast<double>(raw.aperture)));
+	CheckedScan out{raw, 0, std::nullopt};
+	auto& scan = out.scan;
+	size_t bad = 0;
 	for (size_t i = 0; i < scan.getScanSize(); i++)
 	{
 		const float range = scan.getScanRange(i);
@@ -156,13 +164,25 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 			scan.setScanRange(i, scan.maxRange);
 			bad++;
 		}
-		valid += scan.getScanRangeValidity(i);
+		out.valid += scan.getScanRangeValidity(i);
 	}
-	std::vector<std::string> warnings;
 	if (bad)
-		warnings.push_back(record + ": scan " + scan.sensorLabel + ": " + std::to_string(bad) +
-			" rays with NaN, infinite or non-positive range, treated as no return");
-	if (valid == 0)
+		out.warning = record + ": scan " + scan.sensorLabel + ": " + std::to_string(bad) +
+			" rays with NaN, infinite or non-positive range, treated as no return";
+	return out;
+}
+}  // namespace
+
+CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
+	const mrpt::obs::CObservation2DRangeScan& rawScan,
+	const mrpt::obs::CObservationStereoImages& stereo, const std::string& record,
+	const std::optional<mrpt::poses::CPose2D>& odometry)
+{
+	const CheckedScan checked = checkedScan(rawScan, record);
+	const auto& scan = checked.scan;
+	std::vector<std::string> warnings;
+	if (checked.warning) warnings.push_back(*checked.warning);
+	if (checked.valid == 0)
 	{
 		Result r = laserOnly(scan, record + ": scan " + scan.sensorLabel +
 			" has no valid range: no model to check, laser only");
@@ -197,35 +217,7 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 			? evaluator.evaluateGrid(r.left, r.right, modelDisparity, r.geometry, gridFirst, gridStride, rectification)
 			: evaluator.evaluate(r.left, r.right, modelDisparity, r.geometry, rectification);
 	});
-
-	// Every judged pixel: the whole image, or the search grid (timed with
-	// the model check it reads).
-	const CalibrationEvidence evidence = timed(r.times.evaluate, [&] {
-		return calibrationEvidence(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc);
-	});
-	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
-	const bool floorJudgeable = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels;
-	const bool floorContradicted = floorJudgeable && floorAgreement < m_options.minFloorAgreement;
-	if (floorContradicted || inconsistent > m_options.maxInconsistentFraction)
-	{
-		// Too few floor pixels are no evidence (and none at all reads as
-		// 100% agreeing): say so, rather than give their share.
-		const std::string floor = floorJudgeable
-			? std::to_string(int(100 * floorAgreement)) + "% of the floor consistent"
-			: "too little floor in view to judge";
-		Result fallback = laserOnly(scan, record + ": the images contradict the laser model (" + floor + ", " +
-			std::to_string(int(100 * inconsistent)) + "% of the judged pixels inconsistent): stereo calibration suspect, laser only");
-		fallback.warnings.insert(fallback.warnings.begin(), r.warnings.begin(), r.warnings.end());
-		fallback.segments = std::move(r.segments);
-		fallback.model = std::move(r.model);
-		fallback.geometry = r.geometry;
-		fallback.rectified = r.rectified;
-		fallback.left = r.left;
-		fallback.right = r.right;
-		fallback.evaluation = std::move(r.evaluation);
-		fallback.times = r.times;
-		return fallback;
-	}
+	if (auto suspect = calibrationSuspect(r, record)) return laserOnlyAfterTheCheck(scan, std::move(r), *suspect);
 
 	r.search = timed(r.times.search, [&] {
 		auto found = lvf::depth::FocusedEpipolarSearch(m_options.depth)
@@ -236,32 +228,73 @@ CLaserStereoFusion::Result CLaserStereoFusion::fuseFrame(
 				m_options.depth.textureGate(r.evaluation.noiseStd), m_options.depth.pixelStride, found.points);
 		return found;
 	});
-	r.fused = timed(r.times.fuse, [&] {
-		const std::vector<lvf::depth::VisualPoint>* points = &r.search.points;
-		std::vector<lvf::depth::VisualPoint> withRemembered;
-		if (m_memory.enabled() && odometry)
-		{
-			// The searched image: the columns the search's points can lie
-			// at, the rows and right-image columns where its window fits.
-			const int half = m_options.evaluation.windowSize / 2;
-			const float lastRow = float(r.geometry.size.height - 1 - half);
-			const float lastRightColumn = float(r.geometry.size.width - 1 - half);
-			r.remembered = m_memory.recall(*odometry, r.geometry,
-				{r.search.firstColumn, r.search.lastColumn, float(half), lastRow, m_options.depth.zMin,
-					m_options.depth.zMax, float(half), lastRightColumn, rectification.leftNotImaged,
-					rectification.rightNotImaged});
-			m_memory.remember(r.search.points);
-			withRemembered = r.search.points;
-			withRemembered.insert(withRemembered.end(), r.remembered.begin(), r.remembered.end());
-			points = &withRemembered;
-		}
-		const ScanFusion fusion(m_options.fusion);
-		r.visualRanges = fusion.visualRanges(scan, *points,
-			ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)},
-			&r.bridged);
-		return ScanFusion::fuse(scan, r.visualRanges);
-	});
+	r.fused = timed(r.times.fuse, [&] { return fusedScan(scan, odometry, rectification, r); });
 	return r;
+}
+
+std::optional<std::string> CLaserStereoFusion::calibrationSuspect(Result& r, const std::string& record) const
+{
+	// Every judged pixel: the whole image, or the search grid (timed with
+	// the model check it reads).
+	const CalibrationEvidence evidence = timed(r.times.evaluate, [&] {
+		return calibrationEvidence(r.geometry, r.evaluation, m_options.floorHeight, m_options.calibrationNcc);
+	});
+	const double floorAgreement = evidence.floorAgreement(), inconsistent = evidence.disagreeingShare();
+	const bool floorJudgeable = evidence.floorJudged >= TOptions::kMinJudgedFloorPixels;
+	const bool floorContradicted = floorJudgeable && floorAgreement < m_options.minFloorAgreement;
+	if (!floorContradicted && inconsistent <= m_options.maxInconsistentFraction) return std::nullopt;
+	// Too few floor pixels are no evidence (and none at all reads as 100%
+	// agreeing): say so, rather than give their share.
+	const std::string floor = floorJudgeable ? std::to_string(int(100 * floorAgreement)) + "% of the floor consistent"
+											 : "too little floor in view to judge";
+	return record + ": the images contradict the laser model (" + floor + ", " +
+		std::to_string(int(100 * inconsistent)) +
+		"% of the judged pixels inconsistent): stereo calibration suspect, laser only";
+}
+
+CLaserStereoFusion::Result CLaserStereoFusion::laserOnlyAfterTheCheck(
+	const mrpt::obs::CObservation2DRangeScan& scan, Result&& checked, const std::string& why)
+{
+	Result fallback = laserOnly(scan, why);
+	fallback.warnings.insert(fallback.warnings.begin(), checked.warnings.begin(), checked.warnings.end());
+	fallback.segments = std::move(checked.segments);
+	fallback.model = std::move(checked.model);
+	fallback.geometry = checked.geometry;
+	fallback.rectified = checked.rectified;
+	fallback.left = checked.left;
+	fallback.right = checked.right;
+	fallback.evaluation = std::move(checked.evaluation);
+	fallback.times = checked.times;
+	return fallback;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr CLaserStereoFusion::fusedScan(
+	const mrpt::obs::CObservation2DRangeScan& scan, const std::optional<mrpt::poses::CPose2D>& odometry,
+	const lvf::evaluation::RectificationEffects& rectification, Result& r)
+{
+	const std::vector<lvf::depth::VisualPoint>* points = &r.search.points;
+	std::vector<lvf::depth::VisualPoint> withRemembered;
+	if (m_memory.enabled() && odometry)
+	{
+		// The searched image: the columns the search's points can lie at,
+		// the rows and right-image columns where its window fits.
+		const int half = m_options.evaluation.windowSize / 2;
+		const float lastRow = float(r.geometry.size.height - 1 - half);
+		const float lastRightColumn = float(r.geometry.size.width - 1 - half);
+		r.remembered = m_memory.recall(*odometry, r.geometry,
+			{r.search.firstColumn, r.search.lastColumn, float(half), lastRow, m_options.depth.zMin,
+				m_options.depth.zMax, float(half), lastRightColumn, rectification.leftNotImaged,
+				rectification.rightNotImaged});
+		m_memory.remember(r.search.points);
+		withRemembered = r.search.points;
+		withRemembered.insert(withRemembered.end(), r.remembered.begin(), r.remembered.end());
+		points = &withRemembered;
+	}
+	const ScanFusion fusion(m_options.fusion);
+	r.visualRanges = fusion.visualRanges(scan, *points,
+		ScanFusion::SearchedColumns{r.search.firstColumn, r.search.lastColumn, float(m_options.depth.pixelStride)},
+		&r.bridged);
+	return ScanFusion::fuse(scan, r.visualRanges);
 }
 
 }  // namespace lvf::fusion

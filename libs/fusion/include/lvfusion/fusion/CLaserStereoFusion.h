@@ -21,6 +21,7 @@
 #include <lvfusion/depth/FocusedEpipolarSearch.h>
 #include <lvfusion/depth/HorizontalSurfaceGrowth.h>
 #include <lvfusion/evaluation/ModelEvaluator.h>
+#include <lvfusion/evaluation/RectifiedStereo.h>
 #include <lvfusion/fusion/ScanFusion.h>
 #include <lvfusion/fusion/VisualPointMemory.h>
 #include <lvfusion/lines/ScanLineExtractor.h>
@@ -163,6 +164,19 @@ class CLaserStereoFusion : public mrpt::rtti::CObject, public mrpt::system::COut
 	Result fuseFrame(
 		const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::obs::CObservationStereoImages& stereo,
 		const std::string& record, const std::optional<mrpt::poses::CPose2D>& odometry);
+	/** The calibration check on a frame's model evaluation (its time added
+	 * to the evaluation's): why the frame must fall back to the laser, or
+	 * none. */
+	std::optional<std::string> calibrationSuspect(Result& r, const std::string& record) const;
+	/** The laser alone after the check failed, keeping what led to it
+	 * (segments, model, images, evaluation, times) for the pictures. */
+	static Result laserOnlyAfterTheCheck(
+		const mrpt::obs::CObservation2DRangeScan& scan, Result&& checked, const std::string& why);
+	/** Stage 5: the visual ranges of the search's points, with the memory's
+	 * where the cameras cannot look now, and the fused scan. */
+	mrpt::obs::CObservation2DRangeScan::Ptr fusedScan(
+		const mrpt::obs::CObservation2DRangeScan& scan, const std::optional<mrpt::poses::CPose2D>& odometry,
+		const lvf::evaluation::RectificationEffects& rectification, Result& r);
 
 	TOptions m_options;
 	lvf::evaluation::RectifiedStereo m_stereo;	// caches rectification maps
