@@ -55,8 +55,10 @@ done
 rm -rf "$seeds/tmp" "$seeds/rig.ini"
 
 seeds_of() { case $1 in fuzz_world_file) echo world;; fuzz_ini_options) echo ini;; fuzz_text_files) echo text;; *) echo rawlog;; esac; }
+# Each fuzzing process's input file goes here, not into /tmp.
+export TMPDIR; TMPDIR=$(realpath -m "$dir/scratch")
 for t in "${targets[@]}"; do
-  mkdir -p "$dir/corpus/$t" "$dir/findings/$t"
+  mkdir -p "$dir/corpus/$t" "$dir/findings/$t" "$TMPDIR"
   echo "fuzz: $t for $seconds s"
   # -ignore_ooms: MRPT's own deserialisers trust a record's element counts
   # (README, "Fuzzing"); the rest of a run still looks for crashes. With
@@ -66,5 +68,6 @@ for t in "${targets[@]}"; do
   ASAN_OPTIONS=allocator_may_return_null=1 "$dir/bin/$t" "$dir/corpus/$t" "$seeds/$(seeds_of "$t")" -fork=1 -ignore_ooms=1 -malloc_limit_mb=512 \
     -max_total_time="$seconds" -max_len=16384 -artifact_prefix="$dir/findings/$t/" 2>"$dir/$t.log" || true
   grep -E '^#[0-9]+: cov|INFO: exiting|crash|ERROR' "$dir/$t.log" | tail -2
+  rm -rf "$TMPDIR"
 done
 echo "fuzz: findings (none is good):"; find "$dir/findings" -type f -not -name 'oom-*' | sed 's/^/  /'
