@@ -6,32 +6,28 @@
 
 namespace lvf::planning
 {
+std::array<GridMove, 8> gridMoves(float resolution)
+{
+	const float diag = resolution * std::sqrt(2.0f);
+	return {{{-1, -1, diag}, {0, -1, resolution}, {1, -1, diag}, {-1, 0, resolution}, {1, 0, resolution},
+			 {-1, 1, diag}, {0, 1, resolution}, {1, 1, diag}}};
+}
+
 namespace
 {
-struct Move
+/** Per cell (of the padded grid), a bit per move it may take (moveAllowed).
+ * Computed once, so that the sweeps do not re-test traversability eight
+ * times per cell and sweep. */
+cv::Mat1b allowedMoves(const cv::Mat1b& free, const std::array<GridMove, 8>& moves)
 {
-	int dx, dy;
-	float cost;
-};
-
-/** Per cell (of the padded grid), a bit per move it may take: to a
- * traversable neighbour, and for a diagonal with both side cells
- * traversable (no corner cutting). Computed once, so that the sweeps do not
- * re-test traversability eight times per cell and sweep. */
-cv::Mat1b allowedMoves(const cv::Mat1b& free, const std::array<Move, 8>& moves)
-{
+	const auto isFree = [&](int x, int y) { return free(y, x) != 0; };
 	cv::Mat1b allowed(free.size(), uchar(0));
 	for (int y = 1; y + 1 < free.rows; y++)
 		for (int x = 1; x + 1 < free.cols; x++)
 		{
 			if (!free(y, x)) continue;
 			for (size_t m = 0; m < moves.size(); m++)
-			{
-				const int dx = moves[m].dx, dy = moves[m].dy;
-				if (!free(y + dy, x + dx)) continue;
-				if (dx && dy && (!free(y, x + dx) || !free(y + dy, x))) continue;
-				allowed(y, x) |= uchar(1u << m);
-			}
+				if (moveAllowed(isFree, x, y, moves[m])) allowed(y, x) |= uchar(1u << m);
 		}
 	return allowed;
 }
@@ -58,7 +54,7 @@ struct RowActivity
  * largest decrease of a value. */
 float sweep(
 	const cv::Mat1b& allowed, cv::Mat1f& v, const GridCell& goal, bool rowsUp, bool colsUp,
-	const std::array<Move, 8>& moves, RowActivity& rows)
+	const std::array<GridMove, 8>& moves, RowActivity& rows)
 {
 	constexpr float inf = std::numeric_limits<float>::infinity();
 	std::array<int, 8> offset{};  // neighbour index offsets in the padded grid
@@ -96,10 +92,7 @@ float sweep(
 ValueFunction computeValueFunction(
 	const TraversableGrid& grid, const GridCell& goal, size_t maxSweeps, double tolerance)
 {
-	const float res = static_cast<float>(grid.resolution());
-	const float diag = res * std::sqrt(2.0f);
-	const std::array<Move, 8> moves{{{1, 0, res}, {-1, 0, res}, {0, 1, res}, {0, -1, res},
-									 {1, 1, diag}, {1, -1, diag}, {-1, 1, diag}, {-1, -1, diag}}};
+	const auto moves = gridMoves(static_cast<float>(grid.resolution()));
 	// A one-cell border of obstacles spares the inner loop any bounds checks.
 	cv::Mat1b free;
 	cv::copyMakeBorder(grid.traversable(), free, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);

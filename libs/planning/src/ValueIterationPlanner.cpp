@@ -1,4 +1,5 @@
 #include <lvfusion/common/IniSection.h>
+#include <lvfusion/planning/ValueFunction.h>
 #include <lvfusion/planning/ValueIterationPlanner.h>
 
 #include <cmath>
@@ -76,25 +77,23 @@ ValueIterationPlanner::Result ValueIterationPlanner::plan(
 
 	// Descend: the move minimising cost + V; at the fixed point that sum
 	// equals V(here), and V(next) < V(here), so the walk cannot loop.
-	const float res = static_cast<float>(grid.resolution());
-	const float diag = res * std::sqrt(2.0f);  // the same costs as the values'
+	const auto moves = gridMoves(static_cast<float>(grid.resolution()));
+	const auto isFree = [&](int x, int y) {
+		return x >= 0 && y >= 0 && x < v.cols && y < v.rows && grid.isTraversable({x, y});
+	};
 	r.path.push_back(start);
 	GridCell here = from;
 	for (size_t steps = 0; !(here == to) && steps < v.total(); steps++)
 	{
 		GridCell best = here;
 		float bestValue = std::numeric_limits<float>::infinity();
-		for (int dy = -1; dy <= 1; dy++)
-			for (int dx = -1; dx <= 1; dx++)
-			{
-				const GridCell n{here.x + dx, here.y + dy};
-				if ((!dx && !dy) || n.x < 0 || n.y < 0 || n.x >= v.cols || n.y >= v.rows) continue;
-				if (!grid.isTraversable(n)) continue;
-				if (dx && dy && (!grid.isTraversable({here.x + dx, here.y}) || !grid.isTraversable({here.x, here.y + dy})))
-					continue;
-				const float q = (dx && dy ? diag : res) + v(n.y, n.x);
-				if (q < bestValue) bestValue = q, best = n;
-			}
+		for (const GridMove& m : moves)
+		{
+			if (!moveAllowed(isFree, here.x, here.y, m)) continue;
+			const GridCell n{here.x + m.dx, here.y + m.dy};
+			const float q = m.cost + v(n.y, n.x);
+			if (q < bestValue) bestValue = q, best = n;
+		}
 		if (!(v(best.y, best.x) < v(here.y, here.x))) break;  // not converged (max_sweeps hit)
 		here = best;
 		if (!(here == to)) r.path.push_back(grid.centreOf(here));

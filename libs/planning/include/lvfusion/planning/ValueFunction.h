@@ -25,10 +25,32 @@
 
 #include <lvfusion/planning/TraversableGrid.h>
 
+#include <array>
 #include <cstddef>
 
 namespace lvf::planning
 {
+/** One of the 8 moves to a neighbouring cell, and its length [m]. */
+struct GridMove
+{
+	int dx, dy;
+	float cost;
+};
+
+/** The 8 moves on cells of `resolution` [m], row by row from (-1, -1): the
+ * value function and the descent along it must price them alike. */
+std::array<GridMove, 8> gridMoves(float resolution);
+
+/** Whether the cell (x, y) may take `move`, `free(x, y)` telling which
+ * cells are traversable: to a free neighbour, and for a diagonal only past
+ * two free side cells (no corner cutting). (x, y) itself is not tested. */
+template <typename Free>
+bool moveAllowed(const Free& free, int x, int y, const GridMove& move)
+{
+	if (!free(x + move.dx, y + move.dy)) return false;
+	return !(move.dx && move.dy) || (free(x + move.dx, y) && free(x, y + move.dy));
+}
+
 struct ValueFunction
 {
 	cv::Mat1f value;  //!< cost-to-go [m] per cell, +inf: unreachable or obstacle
