@@ -33,14 +33,7 @@ TextureSpec randomTexture(Dice& dice, double texturelessFraction)
 
 Box wallBox(double x0, double y0, double x1, double y1, Dice& dice, double textureless)
 {
-	Box b;
-	b.name = "wall";
-	b.x = 0.5 * (x0 + x1);
-	b.y = 0.5 * (y0 + y1);
-	b.sizeX = std::hypot(x1 - x0, y1 - y0);
-	b.sizeY = 0.1;
-	b.sizeZ = 2.5;
-	b.yaw = std::atan2(y1 - y0, x1 - x0);
+	Box b = wallBetween("wall", {x0, y0}, {x1, y1}, 0.1, 2.5);
 	b.texture = randomTexture(dice, textureless);
 	return b;
 }
@@ -94,25 +87,11 @@ World generateRandomWorld(uint32_t seed, const RandomWorldOptions& o)
 		const double len = dice.uniform(0.9, 1.5), wid = dice.uniform(0.6, 0.8), h = dice.uniform(0.7, 0.8);
 		double x, y;
 		if (!placeFree(0.5 * std::hypot(len, wid), x, y)) continue;
-		const double yaw = dice.uniform(-M_PI, M_PI), c = std::cos(yaw), s = std::sin(yaw);
 		Box top;
-		top.name = "table" + std::to_string(i) + "/top";
-		top.x = x, top.y = y, top.yaw = yaw, top.sizeX = len, top.sizeY = wid, top.sizeZ = 0.04;
-		top.elevation = h - 0.04;
+		top.name = "table" + std::to_string(i);
+		top.x = x, top.y = y, top.yaw = dice.uniform(-M_PI, M_PI), top.sizeX = len, top.sizeY = wid;
 		top.texture = randomTexture(dice, 0.0);
-		w.boxes.push_back(top);
-		for (int k = 0; k < 4; k++)
-		{
-			Box leg = top;
-			const double lx = ((k & 1) ? 0.5 : -0.5) * (len - 0.05), ly = ((k & 2) ? 0.5 : -0.5) * (wid - 0.05);
-			leg.name = "table" + std::to_string(i) + "/leg" + std::to_string(k);
-			leg.x = x + c * lx - s * ly;
-			leg.y = y + s * lx + c * ly;
-			leg.sizeX = leg.sizeY = 0.05;
-			leg.sizeZ = h - 0.04;
-			leg.elevation = 0;
-			w.boxes.push_back(leg);
-		}
+		for (const Box& b : tableBoxes(top, h, 0.04, 0.05)) w.boxes.push_back(b);
 	}
 	for (int i = 0; i < o.wallShelves; i++)
 	{

@@ -259,16 +259,12 @@ class WorldParser
 	{
 		f.requireMap({"name", "from", "to", "thickness", "height", "elevation", "texture"});
 		const auto a = f["from"].position(2), b = f["to"].position(2);
-		Box box;
-		box.name = nameOf(f, "wall", m_walls++);
-		box.sizeX = std::hypot(b[0] - a[0], b[1] - a[1]);
-		if (box.sizeX < kPositive) f.fail("'from' and 'to' are the same point");
-		box.sizeY = f.number("thickness", 0.1, kPositive, 10);
-		box.sizeZ = f.number("height", 2.5, kPositive, 100);
+		const std::string name = nameOf(f, "wall", m_walls++);
+		if (std::hypot(b[0] - a[0], b[1] - a[1]) < kPositive) f.fail("'from' and 'to' are the same point");
+		const double thickness = f.number("thickness", 0.1, kPositive, 10);
+		const double height = f.number("height", 2.5, kPositive, 100);
+		Box box = wallBetween(name, {a[0], a[1]}, {b[0], b[1]}, thickness, height);
 		box.elevation = f.number("elevation", 0, 0, 100);
-		box.x = 0.5 * (a[0] + b[0]);
-		box.y = 0.5 * (a[1] + b[1]);
-		box.yaw = std::atan2(b[1] - a[1], b[0] - a[0]);
 		box.texture = textureOf(f);
 		w.boxes.push_back(box);
 	}
@@ -302,26 +298,8 @@ class WorldParser
 			"leg_width", 0.05, kPositive, 0.5 * std::min(s[0], s[1]));
 		top.sizeX = s[0];
 		top.sizeY = s[1];
-		top.sizeZ = thickness;
-		top.elevation = height - thickness;
 		top.texture = textureOf(f);
-		const std::string name = top.name;
-		top.name += "/top";
-		w.boxes.push_back(top);
-		const double c = std::cos(top.yaw), sn = std::sin(top.yaw);
-		for (int k = 0; k < 4; k++)
-		{
-			const double lx = ((k & 1) ? 0.5 : -0.5) * (s[0] - leg);
-			const double ly = ((k & 2) ? 0.5 : -0.5) * (s[1] - leg);
-			Box legBox = top;
-			legBox.name = name + "/leg" + std::to_string(k);
-			legBox.x = top.x + c * lx - sn * ly;
-			legBox.y = top.y + sn * lx + c * ly;
-			legBox.sizeX = legBox.sizeY = leg;
-			legBox.sizeZ = height - thickness;
-			legBox.elevation = 0;
-			w.boxes.push_back(legBox);
-		}
+		for (const Box& b : tableBoxes(top, height, thickness, leg)) w.boxes.push_back(b);
 	}
 
 	/** A shelf unit: two side panels and evenly spaced boards. With an

@@ -50,6 +50,18 @@ struct Lighting
 	double background = 0.0;  //!< intensity [0,1] of rays that hit nothing
 };
 
+/** A wall of `thickness` and `height` whose centre line runs from `from`
+ * to `to` (which must differ), untextured. */
+Box wallBetween(
+	const std::string& name, const mrpt::math::TPoint2D& from, const mrpt::math::TPoint2D& to, double thickness,
+	double height);
+
+/** A table: `top` (pose, footprint, texture and name given) made
+ * `thickness` thick with its upper face at `height`, and four square legs
+ * `legWidth` wide inside its corners, textured as the top; the top first.
+ * Names: NAME/top, NAME/leg0..3. */
+std::vector<Box> tableBoxes(Box top, double height, double thickness, double legWidth);
+
 struct World
 {
 	std::string name;
