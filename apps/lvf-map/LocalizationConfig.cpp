@@ -210,8 +210,9 @@ LocalizationConfig LocalizationConfig::load(const std::string& path)
 		throw InputError(source, "", "MRPT's particle filter or maps refuse it: " + lvf::common::exceptionMessage(e));
 	}
 	c.obsOnlyOdometry.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
-	c.obsOnlyOdometry.gaussianModel.minStdXY = cfg.read_double("DummyOdometryParams", "minStdXY", 0.15);
-	c.obsOnlyOdometry.gaussianModel.minStdPHI = mrpt::DEG2RAD(cfg.read_double("DummyOdometryParams", "minStdPHI", 5.0));
+	// (The defaults give both keys: nothing to fall back on.)
+	c.obsOnlyOdometry.gaussianModel.minStdXY = cfg.read_double("DummyOdometryParams", "minStdXY", 0, true);
+	c.obsOnlyOdometry.gaussianModel.minStdPHI = mrpt::DEG2RAD(cfg.read_double("DummyOdometryParams", "minStdPHI", 0, true));
 	return c;
 }
 
@@ -230,7 +231,7 @@ void LocalizationConfig::readExperiment(const mrpt::config::CConfigFileBase& cfg
 		initMin = {0, 0, -M_PI};
 		initMax = {0, 0, M_PI};
 	}
-	particles = static_cast<size_t>(ini.integer("particles_count", static_cast<int>(particles), 1, 10000000));
+	particles = static_cast<size_t>(ini.integer("particles_count", static_cast<int>(particles), 1, kMostParticles));
 	initOnFreeSpace = ini.integer("init_PDF_mode", initOnFreeSpace ? 0 : 1, 0, 1) == 0;
 	initMin = {ini.real("init_PDF_min_x", initMin.x), ini.real("init_PDF_min_y", initMin.y),
 			   mrpt::DEG2RAD(ini.real("init_PDF_min_yaw_deg", mrpt::RAD2DEG(initMin.phi), -360, 360))};

@@ -13,21 +13,38 @@ using lvf::common::InputError;
 
 namespace
 {
-constexpr int kMostParticles = 10000000;
+// Range checks of what the user's file gives: MRPT reads the values itself,
+// from the defaults with that file over them, so a key the file leaves out
+// is the default's and not checked (the lower bound stands in for a value
+// never used).
+void realInRange(lvf::common::IniSection& ini, const std::string& key, double lowest, double highest)
+{
+	ini.real(key, lowest, lowest, highest);
+}
+void integerInRange(lvf::common::IniSection& ini, const std::string& key, int lowest, int highest)
+{
+	ini.integer(key, lowest, lowest, highest);
+}
+
+/** A number of the defaults with the user's file over them: always there. */
+int mergedInteger(const mrpt::config::CConfigFileBase& merged, const std::string& section, const std::string& key)
+{
+	return merged.read_int(section, key, 0, /* failIfNotFound */ true);
+}
 
 /** The filter's algorithm choices, which MRPT refuses (as its own
  * exception) only on the run's first step. */
 void requireFilterChoices(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged)
 {
 	lvf::common::IniSection ini(user, "PF_options");
-	ini.integer("PF_algorithm", 0, 0, 3);
-	ini.integer("resamplingMethod", 0, 0, 3);
-	ini.integer("adaptiveSampleSize", 1, 0, 1);
-	ini.real("BETA", 0.5, 0, 1);
-	ini.integer("pfAuxFilterOptimal_MaximumSearchSamples", 10, 1, kMostParticles);
+	integerInRange(ini, "PF_algorithm", 0, 3);
+	integerInRange(ini, "resamplingMethod", 0, 3);
+	integerInRange(ini, "adaptiveSampleSize", 0, 1);
+	realInRange(ini, "BETA", 0, 1);
+	integerInRange(ini, "pfAuxFilterOptimal_MaximumSearchSamples", 1, kMostParticles);
 	// MRPT's KLD-adaptive sampling draws multinomially and throws otherwise.
-	if (merged.read_int("PF_options", "adaptiveSampleSize", 1) != 0 &&
-		merged.read_int("PF_options", "resamplingMethod", 0) != 0)
+	if (mergedInteger(merged, "PF_options", "adaptiveSampleSize") != 0 &&
+		mergedInteger(merged, "PF_options", "resamplingMethod") != 0)
 		throw InputError(ini.sourceName(), "[PF_options] resamplingMethod",
 			"must be 0 (multinomial) with adaptiveSampleSize = 1, MRPT's KLD sampling draws no other way");
 }
@@ -35,22 +52,22 @@ void requireFilterChoices(const mrpt::config::CConfigFileBase& user, const mrpt:
 void requireKldBounds(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged)
 {
 	lvf::common::IniSection ini(user, "KLD_options");
-	ini.real("KLD_binSize_PHI_deg", 2, 1e-3, 360);
-	ini.real("KLD_binSize_XY", 0.02, 1e-4, 1e3);
-	ini.real("KLD_delta", 0.01, 1e-9, 1 - 1e-9);  // a probability, and MRPT takes its normal quantile
-	ini.real("KLD_epsilon", 0.01, 1e-9, 1);
-	ini.integer("KLD_maxSampleSize", 5000, 1, kMostParticles);
-	ini.integer("KLD_minSampleSize", 300, 1, kMostParticles);
-	ini.integer("KLD_minSamplesPerBin", 0, 0, kMostParticles);
-	if (merged.read_int("KLD_options", "KLD_minSampleSize", 300) > merged.read_int("KLD_options", "KLD_maxSampleSize", 5000))
+	realInRange(ini, "KLD_binSize_PHI_deg", 1e-3, 360);
+	realInRange(ini, "KLD_binSize_XY", 1e-4, 1e3);
+	realInRange(ini, "KLD_delta", 1e-9, 1 - 1e-9);  // a probability, and MRPT takes its normal quantile
+	realInRange(ini, "KLD_epsilon", 1e-9, 1);
+	integerInRange(ini, "KLD_maxSampleSize", 1, kMostParticles);
+	integerInRange(ini, "KLD_minSampleSize", 1, kMostParticles);
+	integerInRange(ini, "KLD_minSamplesPerBin", 0, kMostParticles);
+	if (mergedInteger(merged, "KLD_options", "KLD_minSampleSize") > mergedInteger(merged, "KLD_options", "KLD_maxSampleSize"))
 		throw InputError(ini.sourceName(), "[KLD_options] KLD_minSampleSize", "must not exceed KLD_maxSampleSize");
 }
 
 void requireOdometryFloors(const mrpt::config::CConfigFileBase& user)
 {
 	lvf::common::IniSection ini(user, "DummyOdometryParams");
-	ini.real("minStdXY", 0.15, 0, 100);
-	ini.real("minStdPHI", 5, 0, 180);
+	realInRange(ini, "minStdXY", 0, 100);
+	realInRange(ini, "minStdPHI", 0, 180);
 }
 
 /** MRPT's TLikelihoodMethod by number (MRPT casts it unchecked) or by name,
@@ -65,7 +82,7 @@ void requireLikelihoodMethod(lvf::common::IniSection& likelihood)
 	if (method.empty()) return;
 	if (method.find_first_not_of("+-0123456789") == std::string::npos)
 	{
-		likelihood.integer("likelihoodMethod", Grid::lmLikelihoodField_Thrun, first, last);
+		integerInRange(likelihood, "likelihoodMethod", first, last);
 		return;
 	}
 	try
@@ -89,29 +106,29 @@ void requireLikelihoodMethod(lvf::common::IniSection& likelihood)
 void requireGridOptions(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged)
 {
 	lvf::common::IniSection maps(user, "MetricMap");
-	maps.integer("occupancyGrid_count", 1, 0, 100);
-	maps.integer("pointsMap_count", 0, 0, 100);
-	const int grids = merged.read_int("MetricMap", "occupancyGrid_count", 1);
-	if (grids + merged.read_int("MetricMap", "pointsMap_count", 0) < 1)
+	integerInRange(maps, "occupancyGrid_count", 0, 100);
+	integerInRange(maps, "pointsMap_count", 0, 100);
+	const int grids = mergedInteger(merged, "MetricMap", "occupancyGrid_count");
+	if (grids + mergedInteger(merged, "MetricMap", "pointsMap_count") < 1)
 		throw InputError(maps.sourceName(), "[MetricMap] occupancyGrid_count",
 			"no occupancy grid or points map: the particle filter would have nothing to score the scans in");
 	for (int k = 0; k < grids; k++)
 	{
 		const std::string prefix = mrpt::format("MetricMap_occupancyGrid_%02d_", k);
 		lvf::common::IniSection creation(user, prefix + "creationOpts");
-		creation.real("resolution", 0.05, 1e-4, 100);
+		realInRange(creation, "resolution", 1e-4, 100);
 		lvf::common::IniSection insert(user, prefix + "insertOpts");
-		insert.real("maxOccupancyUpdateCertainty", 0.55, 0.5, 1);
-		insert.real("maxDistanceInsertion", 15, 0, 1e6);
-		insert.real("minLaserScanNoiseStd", 0.001, 0, 100);
+		realInRange(insert, "maxOccupancyUpdateCertainty", 0.5, 1);
+		realInRange(insert, "maxDistanceInsertion", 0, 1e6);
+		realInRange(insert, "minLaserScanNoiseStd", 0, 100);
 		lvf::common::IniSection likelihood(user, prefix + "likelihoodOpts");
 		requireLikelihoodMethod(likelihood);
-		likelihood.integer("LF_decimation", 5, 1, 1000000);
-		likelihood.real("LF_stdHit", 0.05, 1e-6, 1e3);
-		likelihood.real("LF_maxCorrsDistance", 0.3, 1e-6, 1e3);
-		likelihood.real("LF_zHit", 0.95, 0, 1);
-		likelihood.real("LF_zRandom", 0.05, 0, 1);
-		likelihood.real("LF_maxRange", 80, 1e-6, 1e6);
+		integerInRange(likelihood, "LF_decimation", 1, 1000000);
+		realInRange(likelihood, "LF_stdHit", 1e-6, 1e3);
+		realInRange(likelihood, "LF_maxCorrsDistance", 1e-6, 1e3);
+		realInRange(likelihood, "LF_zHit", 0, 1);
+		realInRange(likelihood, "LF_zRandom", 0, 1);
+		realInRange(likelihood, "LF_maxRange", 1e-6, 1e6);
 	}
 }
 }  // namespace

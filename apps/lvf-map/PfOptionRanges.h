@@ -10,6 +10,9 @@
 
 namespace lvf::apps
 {
+/** The most particles any of the filter's counts may ask for. */
+constexpr int kMostParticles = 10000000;
+
 /** `user`: the file as written (errors name it); `merged`: the defaults with
  * it over them (for rules across keys). Throws lvf::common::InputError. */
 void requireUsablePfOptions(const mrpt::config::CConfigFileBase& user, const mrpt::config::CConfigFileBase& merged);
