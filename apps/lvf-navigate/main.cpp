@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 using lvf::common::InputError;
@@ -247,6 +248,81 @@ int runBatch(
 	return lvf::common::kExitOk;
 }
 
+/** The loop's, the navigator's, the simulator's and the fusion's
+ * configuration and the holonomic method: --config, with the sensors' and
+ * the fusion's own files (if given) and --method, --timeout over it. */
+nav::NavigationSetup loadSetup(
+	const std::string& config, const std::string& sensors, const std::string& fusion, const std::string& methodOption,
+	std::optional<double> timeout)
+{
+	nav::NavigationSetup setup;
+	const auto navConfig = lvf::common::openIniFile(config);
+	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
+	setup.navigatorConfig = readText(config);
+	setup.navigatorConfigSource = config;
+	{
+		// MRPT's navigator loads [CHolonomicVFH] itself and turns a bad key
+		// into an internal error: check the section here, naming the file.
+		lvf::vfh::CHolonomicVFH::TOptions vfh;
+		loadOwnSections(vfh, "CHolonomicVFH", *navConfig, config);
+	}
+	if (timeout)
+	{
+		if (!(*timeout > 0)) throw InputError("--timeout", "", "must be > 0");
+		setup.loop.timeout = *timeout;
+	}
+	// The simulator's and the fusion's sections: from their own files if
+	// given, else from --config if it has them (as --dump-config writes).
+	if (!sensors.empty())
+		setup.sensors.loadFromConfigFile(*lvf::common::openIniFile(sensors), kSensorsSection);
+	else if (navConfig->sectionExists(kSensorsSection))
+		loadOwnSections(setup.sensors, kSensorsSection, *navConfig, config);
+	if (!fusion.empty())
+		setup.fusion.loadFromConfigFile(*lvf::common::openIniFile(fusion), kFusionSection);
+	else if (navConfig->sectionExists(kFusionSection))
+		loadOwnSections(setup.fusion, kFusionSection, *navConfig, config);
+	setup.method = methodOption.empty()
+		? navConfig->read_string("CAbstractPTGBasedReactive", "holonomic_method", "CHolonomicND")
+		: methodOption;
+	nav::requireHolonomicMethod(setup.method, methodOption.empty() ? config : "--method");
+	nav::requireNavigatorAccepts(setup.navigatorConfig, setup.method, config);
+	return setup;
+}
+
+/** A single run's world, start and target: a seeded random room of `kind`,
+ * else the world file (the box room by default), with --start and --target
+ * over what it gives. */
+nav::NavigationScenario chooseScenario(
+	std::optional<uint32_t> seed, nav::RoomKind kind, const std::string& worldFile,
+	const std::optional<std::string>& start, const std::optional<std::string>& target)
+{
+	nav::NavigationScenario scenario;
+	if (seed)
+		scenario = nav::randomScenario(*seed, kind);
+	else
+	{
+		const std::string path = worldFile.empty() ? kDefaultWorld : worldFile;
+		scenario.world = lvf::simulation::loadWorldFile(path);
+		if (scenario.world.path.empty() && !start)
+			throw InputError(path, "path", "no start pose (give a path or --start)");
+		if (!scenario.world.target && !target)
+			throw InputError(path, "target", "no navigation target (add target: [x, y] or give --target)");
+		if (!scenario.world.path.empty()) scenario.start = scenario.world.path.front();
+		if (scenario.world.target) scenario.target = *scenario.world.target;
+	}
+	if (start)
+	{
+		const auto v = parseNumbers(*start, 3, "--start");
+		scenario.start = mrpt::math::TPose2D(v[0], v[1], mrpt::DEG2RAD(v[2]));
+	}
+	if (target)
+	{
+		const auto v = parseNumbers(*target, 2, "--target");
+		scenario.target = mrpt::math::TPoint2D(v[0], v[1]);
+	}
+	return scenario;
+}
+
 int run(int argc, char** argv)
 {
 	TCLAP::CmdLine cmd(
@@ -282,38 +358,11 @@ int run(int argc, char** argv)
 	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the run's rawlog is written inside it");
 
 	lvf::registerAllClasses();
-	nav::NavigationSetup setup;
-	const auto navConfig = lvf::common::openIniFile(argConfig.getValue());
-	setup.loop.loadFromConfigFile(*navConfig, "NavigationLoop");
-	setup.navigatorConfig = readText(argConfig.getValue());
-	setup.navigatorConfigSource = argConfig.getValue();
-	{
-		// MRPT's navigator loads [CHolonomicVFH] itself and turns a bad key
-		// into an internal error: check the section here, naming the file.
-		lvf::vfh::CHolonomicVFH::TOptions vfh;
-		loadOwnSections(vfh, "CHolonomicVFH", *navConfig, argConfig.getValue());
-	}
-	if (argTimeout.isSet())
-	{
-		if (!(argTimeout.getValue() > 0)) throw InputError("--timeout", "", "must be > 0");
-		setup.loop.timeout = argTimeout.getValue();
-	}
-	// The simulator's and the fusion's sections: from their own files if
-	// given, else from --config if it has them (as --dump-config writes).
-	if (!argSensors.getValue().empty())
-		setup.sensors.loadFromConfigFile(*lvf::common::openIniFile(argSensors.getValue()), kSensorsSection);
-	else if (navConfig->sectionExists(kSensorsSection))
-		loadOwnSections(setup.sensors, kSensorsSection, *navConfig, argConfig.getValue());
-	if (!argFusion.getValue().empty())
-		setup.fusion.loadFromConfigFile(*lvf::common::openIniFile(argFusion.getValue()), kFusionSection);
-	else if (navConfig->sectionExists(kFusionSection))
-		loadOwnSections(setup.fusion, kFusionSection, *navConfig, argConfig.getValue());
-	const std::string method = argMethod.getValue().empty()
-		? navConfig->read_string("CAbstractPTGBasedReactive", "holonomic_method", "CHolonomicND")
-		: argMethod.getValue();
-	nav::requireHolonomicMethod(method, argMethod.getValue().empty() ? argConfig.getValue() : "--method");
-	nav::requireNavigatorAccepts(setup.navigatorConfig, method, argConfig.getValue());
-	setup.method = method;
+	std::optional<double> timeout;
+	if (argTimeout.isSet()) timeout = argTimeout.getValue();
+	nav::NavigationSetup setup =
+		loadSetup(argConfig.getValue(), argSensors.getValue(), argFusion.getValue(), argMethod.getValue(), timeout);
+	const std::string& method = setup.method;
 	if (argDumpConfig.getValue())
 	{
 		std::cout << dumpConfig(setup);
@@ -349,30 +398,10 @@ int run(int argc, char** argv)
 		throw InputError("--room-kind", "", "a single run takes one room kind (lists only with --batch)");
 	setup.sensing = sensings.front();
 
-	nav::NavigationScenario scenario;
-	if (argRandom.isSet())
-		scenario = nav::randomScenario(uint32_t(argRandom.getValue()), kinds.front());
-	else
-	{
-		const std::string path = argWorld.getValue().empty() ? kDefaultWorld : argWorld.getValue();
-		scenario.world = lvf::simulation::loadWorldFile(path);
-		if (scenario.world.path.empty() && !argStart.isSet())
-			throw InputError(path, "path", "no start pose (give a path or --start)");
-		if (!scenario.world.target && !argTarget.isSet())
-			throw InputError(path, "target", "no navigation target (add target: [x, y] or give --target)");
-		if (!scenario.world.path.empty()) scenario.start = scenario.world.path.front();
-		if (scenario.world.target) scenario.target = *scenario.world.target;
-	}
-	if (argStart.isSet())
-	{
-		const auto v = parseNumbers(argStart.getValue(), 3, "--start");
-		scenario.start = mrpt::math::TPose2D(v[0], v[1], mrpt::DEG2RAD(v[2]));
-	}
-	if (argTarget.isSet())
-	{
-		const auto v = parseNumbers(argTarget.getValue(), 2, "--target");
-		scenario.target = mrpt::math::TPoint2D(v[0], v[1]);
-	}
+	auto given = [](TCLAP::ValueArg<std::string>& a) { return a.isSet() ? std::optional(a.getValue()) : std::nullopt; };
+	const auto scenario = chooseScenario(
+		argRandom.isSet() ? std::optional(uint32_t(argRandom.getValue())) : std::nullopt, kinds.front(),
+		argWorld.getValue(), given(argStart), given(argTarget));
 	return runSingle(scenario, setup, argOutdir.getValue(), argQuiet.getValue());
 }
 
