@@ -248,6 +248,13 @@ int runBatch(
 	return lvf::common::kExitOk;
 }
 
+/** An option's value where the command line gives it. */
+template <typename T>
+std::optional<T> ifGiven(TCLAP::ValueArg<T>& option)
+{
+	return option.isSet() ? std::optional<T>(option.getValue()) : std::nullopt;
+}
+
 /** The loop's, the navigator's, the simulator's and the fusion's
  * configuration and the holonomic method: --config, with the sensors' and
  * the fusion's own files (if given) and --method, --timeout over it. */
@@ -358,10 +365,8 @@ int run(int argc, char** argv)
 	lvf::common::rejectRawlogNamedFolder(argOutdir.getValue(), "--outdir", "the run's rawlog is written inside it");
 
 	lvf::registerAllClasses();
-	std::optional<double> timeout;
-	if (argTimeout.isSet()) timeout = argTimeout.getValue();
-	nav::NavigationSetup setup =
-		loadSetup(argConfig.getValue(), argSensors.getValue(), argFusion.getValue(), argMethod.getValue(), timeout);
+	nav::NavigationSetup setup = loadSetup(
+		argConfig.getValue(), argSensors.getValue(), argFusion.getValue(), argMethod.getValue(), ifGiven(argTimeout));
 	const std::string& method = setup.method;
 	if (argDumpConfig.getValue())
 	{
@@ -398,10 +403,10 @@ int run(int argc, char** argv)
 		throw InputError("--room-kind", "", "a single run takes one room kind (lists only with --batch)");
 	setup.sensing = sensings.front();
 
-	auto given = [](TCLAP::ValueArg<std::string>& a) { return a.isSet() ? std::optional(a.getValue()) : std::nullopt; };
+	const auto seed = ifGiven(argRandom);  // checked >= 0 above
 	const auto scenario = chooseScenario(
-		argRandom.isSet() ? std::optional(uint32_t(argRandom.getValue())) : std::nullopt, kinds.front(),
-		argWorld.getValue(), given(argStart), given(argTarget));
+		seed ? std::optional(uint32_t(*seed)) : std::nullopt, kinds.front(), argWorld.getValue(), ifGiven(argStart),
+		ifGiven(argTarget));
 	return runSingle(scenario, setup, argOutdir.getValue(), argQuiet.getValue());
 }
 

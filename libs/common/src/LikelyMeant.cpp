@@ -34,14 +34,15 @@ std::string likelyMeant(const std::string& name, const std::vector<std::string>&
 	const std::string typed = mrpt::system::lowerCase(name);
 	if (typed.empty()) return "";
 	const size_t most = std::min<size_t>(2, (typed.size() - 1) / 3);
-	std::string best;
+	std::string best, bestLowered;
 	size_t bestDistance = most + 1;
 	bool tie = false;
 	for (const auto& candidate : known)
 	{
-		const size_t distance = editDistance(typed, mrpt::system::lowerCase(candidate));
-		if (distance < bestDistance) best = candidate, bestDistance = distance, tie = false;
-		else if (distance == bestDistance && mrpt::system::lowerCase(candidate) != mrpt::system::lowerCase(best)) tie = true;
+		const std::string lowered = mrpt::system::lowerCase(candidate);
+		const size_t distance = editDistance(typed, lowered);
+		if (distance < bestDistance) best = candidate, bestLowered = lowered, bestDistance = distance, tie = false;
+		else if (distance == bestDistance && lowered != bestLowered) tie = true;
 	}
 	return bestDistance <= most && !tie ? best : "";
 }

@@ -70,8 +70,7 @@ ValueIterationPlanner::Result ValueIterationPlanner::plan(
 	r.converged = vf.converged;
 	const cv::Mat1f& v = vf.value;
 	// Unreachable, unless the sweeps stopped before the values settled.
-	const PlanOutcome notFound = vf.converged ? PlanOutcome::Unreachable : PlanOutcome::SweepsExhausted;
-	r.outcome = notFound;
+	r.outcome = vf.converged ? PlanOutcome::Unreachable : PlanOutcome::SweepsExhausted;
 	if (!std::isfinite(v(from.y, from.x))) return r;
 	r.costToGo = v(from.y, from.x);
 
