@@ -66,9 +66,8 @@ TEST(WindowStatistics, OnARowGridTheSameAsOverTheWholeImageBitForBit)
 {
 	// The focused search asks for the window statistics of its grid's rows
 	// only; the NCC scores divide by them, so they must be the whole-image
-	// box filters' to the last bit, or the search would decide otherwise.
-	// Whole grey levels (as MatchingLevel's images hold): noise, a smooth
-	// picture, and a simulated frame.
+	// box filters' to the last bit, or the search would decide otherwise:
+	// noise, a smooth picture, and a simulated frame.
 	cv::RNG rng(7);
 	cv::Mat1b noise(120, 160), smooth;
 	rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
@@ -82,10 +81,8 @@ TEST(WindowStatistics, OnARowGridTheSameAsOverTheWholeImageBitForBit)
 	cv::Mat1b frame, right;
 	stereo.rectify(*f.stereo, frame, right);
 	size_t compared = 0;
-	for (const cv::Mat1b& grey : {noise, smooth, frame})
+	for (const cv::Mat1b& image : {noise, smooth, frame})
 	{
-		cv::Mat1f image;
-		grey.convertTo(image, CV_32F);
 		for (int half : {1, 2, 5, 7})
 		{
 			// Some rows of a grid wanted, in runs and alone (the search's

@@ -27,7 +27,7 @@ constexpr double kMinGain = 0.1;
 
 /** Four doubles: one AVX2 register, two SSE2 ones in the baseline clone. */
 typedef double Doubles4 __attribute__((vector_size(32)));
-typedef float Floats4 __attribute__((vector_size(16)));
+typedef uint8_t Bytes4 __attribute__((vector_size(4)));
 
 /** The weighted sums one Gauss-Newton step needs, of the right window
  * interpolated at a column's fraction (r), its gradient along the row (g)
@@ -42,7 +42,7 @@ struct StepSums
  * columns; weights are 0 past the window's side, which zeroes what the
  * padding reads. */
 LVF_VECTOR_CLONES StepSums stepSums(
-	const float* const* right, const double* left, const double* weights, int rows, int paddedSide, double w1)
+	const uint8_t* const* right, const double* left, const double* weights, int rows, int paddedSide, double w1)
 {
 	const double w0 = 1 - w1;
 	// r, g, rr, rg, gg, rl, gl, each four columns wide. (Vectors stay inside
@@ -50,11 +50,11 @@ LVF_VECTOR_CLONES StepSums stepSums(
 	Doubles4 sums[7] = {};
 	for (int row = 0; row < rows; row++)
 	{
-		const float* r = right[row];
+		const uint8_t* r = right[row];
 		for (int k = 0; k < paddedSide; k += 4, left += 4, weights += 4)
 		{
 			// r[k - 1 .. k + 2] of the window's columns k .. k + 3.
-			Floats4 f[4];
+			Bytes4 f[4];
 			std::memcpy(f, r + k, sizeof f[0]);
 			std::memcpy(f + 1, r + k + 1, sizeof f[0]);
 			std::memcpy(f + 2, r + k + 2, sizeof f[0]);
@@ -98,7 +98,7 @@ SubpixelRefinement::SubpixelRefinement(int half, double sigma)
 }
 
 double SubpixelRefinement::refine(
-	const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, double column, int iterations) const
+	const cv::Mat1b& left, const cv::Mat1b& right, int u, int v, double column, int iterations) const
 {
 	if (iterations <= 0) return column;
 	const int half = m_half, side = 2 * half + 1;
@@ -108,7 +108,7 @@ double SubpixelRefinement::refine(
 	double sl = 0;
 	for (int row = 0; row < side; row++)
 	{
-		const float* l = left[v - half + row] + (u - half);
+		const uint8_t* l = left[v - half + row] + (u - half);
 		double* padded = leftWindow.data() + row * m_paddedSide;
 		for (int k = 0; k < m_paddedSide; k++)
 		{
@@ -116,7 +116,7 @@ double SubpixelRefinement::refine(
 			sl += m_weights[size_t(row * m_paddedSide + k)] * padded[k];
 		}
 	}
-	std::array<const float*, kMaxSide> rightRows;
+	std::array<const uint8_t*, kMaxSide> rightRows;
 	const double sw = m_weightSum;
 	double x = column;
 	for (int it = 0; it < iterations; it++)

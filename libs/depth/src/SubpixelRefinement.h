@@ -34,7 +34,7 @@ class SubpixelRefinement
 	 * itself where the windows do not correlate positively, a step leaves
 	 * the image, or the column moves more than a pixel from where the search
 	 * took its tests. */
-	double refine(const cv::Mat1f& left, const cv::Mat1f& right, int u, int v, double column, int iterations) const;
+	double refine(const cv::Mat1b& left, const cv::Mat1b& right, int u, int v, double column, int iterations) const;
 
    private:
 	/** The window's widest side the sums' fixed buffers hold [px]. */

@@ -14,8 +14,10 @@ namespace lvf::depth
 {
 namespace
 {
-void wholeImage(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& deviation)
+void wholeImage(const cv::Mat1b& grey, int half, cv::Mat1f& mean, cv::Mat1f& deviation)
 {
+	cv::Mat1f image;
+	grey.convertTo(image, CV_32F);
 	const cv::Size window(2 * half + 1, 2 * half + 1);
 	cv::blur(image, mean, window);
 	// Squares summed by sqrBoxFilter, the rest in place: the temporaries of
@@ -33,12 +35,13 @@ void wholeImage(const cv::Mat1f& image, int half, cv::Mat1f& mean, cv::Mat1f& de
 /** Adds (sign +1) or subtracts (-1) an image row to the column sums of
  * values and of squares. */
 LVF_VECTOR_CLONES void slideColumnSums(
-	const float* __restrict row, float sign, int width, float* __restrict sums, float* __restrict squares)
+	const uint8_t* __restrict row, float sign, int width, float* __restrict sums, float* __restrict squares)
 {
 	for (int u = 0; u < width; u++)
 	{
-		sums[u] += sign * row[u];
-		squares[u] += sign * (row[u] * row[u]);
+		const float value = row[u];
+		sums[u] += sign * value;
+		squares[u] += sign * (value * value);
 	}
 }
 
@@ -73,7 +76,7 @@ LVF_VECTOR_CLONES void meansAndVariances(const float* __restrict sums, const flo
 }
 }  // namespace
 
-void windowStatistics(const cv::Mat1f& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation)
+void windowStatistics(const cv::Mat1b& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation)
 {
 	const int width = image.cols, side = 2 * half + 1;
 	// Whole grey levels: every column and window sum (of values and of
@@ -95,7 +98,7 @@ void windowStatistics(const cv::Mat1f& image, int half, const RowGrid& rows, cv:
 			std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
 		};
 		auto addRow = [&](int y, int direction) {
-			slideColumnSums(image.ptr<float>(y), static_cast<float>(direction), width, columnSum.data(), columnSquares.data());
+			slideColumnSums(image.ptr<uint8_t>(y), static_cast<float>(direction), width, columnSum.data(), columnSquares.data());
 		};
 		int previous = -1;
 		for (int v = firstRow; v < endRow; v += rows.step)

@@ -1,6 +1,6 @@
 #pragma once
 // One resolution of the rectified pair, ready for window matching along rows:
-// float images, the window mean and deviation of every pixel of both, or of
+// the grey images, the window mean and deviation of every pixel of both, or of
 // the rows it will match from (WindowStatistics.h; once per frame, the left
 // image's when first asked for), both images as neighbour pairs for the
 // cross terms' integer multiply-adds (CrossTerms.h), and an EpipolarScores
@@ -47,7 +47,7 @@ class MatchingLevel
 	std::unique_ptr<MatchingLevel> forAnotherThread() const;
 
 	const int half;
-	const cv::Mat1f &left, &right;
+	const cv::Mat1b &left, &right;
 	const cv::Mat1i &leftPairs, &rightPairs;  //!< both as neighbour pairs (CrossTerms.h)
 	const cv::Mat1f &rightMean, &rightStd;
 	EpipolarScores forward;	 //!< a left window against the right row

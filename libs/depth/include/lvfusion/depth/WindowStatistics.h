@@ -19,12 +19,12 @@ struct RowGrid
 	bool isWanted(int v) const { return wanted.empty() || wanted[static_cast<size_t>(v)]; }
 };
 
-/** Window mean and deviation at every pixel of `image` (box filters, border
- * reflected); with a row grid, only at the grid's rows and only where a
- * whole window fits (columns and rows half .. size - 1 - half) -- every
- * other value is left undefined. The grid's values are those of the whole
- * image bit for bit when the image holds whole grey levels (MatchingLevel's
- * do): its window sums are integers, exact in any order, and scaled and
+/** Window mean and deviation at every pixel of a grey `image` (box filters
+ * in float, border reflected); with a row grid, only at the grid's rows and
+ * only where a whole window fits (columns and rows half .. size - 1 - half)
+ * -- every other value is left undefined. The grid's values are those of the
+ * whole image bit for bit: its window sums are integers, exact in any order
+ * in float (up to 15 x 15 windows), and scaled and
  * combined as OpenCV's blur and sqrBoxFilter do (checked by
  * test_visual_depth; no product is fused into a sum on the default
  * x86-64 target, as in EpipolarScores' score formula). The focused search
@@ -32,6 +32,6 @@ struct RowGrid
  * of the rows at the default stride (0.90 -> 0.43 ms per 640x480 frame),
  * and the half resolution's where a window fits (0.67 -> 0.52 ms for both
  * images: OpenCV's six whole-image passes cost more at 320x240). */
-void windowStatistics(const cv::Mat1f& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation);
+void windowStatistics(const cv::Mat1b& image, int half, const RowGrid& rows, cv::Mat1f& mean, cv::Mat1f& deviation);
 
 }  // namespace lvf::depth
