@@ -333,8 +333,8 @@ TEST(RectifiedStereo, FishEyeCalibrationIsRefusedByName)
 TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 {
 	// warpByModel does by hand what cv::remap does with maps x = u + cxOffset
-	// - d, y = v; the evaluation's NCC is computed from it, so it must be
-	// remap's to the last bit. A simulated frame with the room's model, and
+	// - d, y = v, in 1/32 grey levels; the evaluation's NCC is computed from
+	// it, so it must be 32 times remap's to the last bit. A simulated frame with the room's model, and
 	// disparities of every kind: fractional, none (0) or negative, sending
 	// the column past either edge of the image (the vector path takes
 	// blocks of eight columns, the plain one those where a column falls
@@ -350,7 +350,7 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 	for (const auto& [disparity, geometry] :
 		 {std::pair{scene.eval.modelDisparity, scene.stereo.geometry()}, std::pair{odd, shifted}})
 	{
-		cv::Mat1f warped, warpedMarked;
+		cv::Mat1w warped, warpedMarked;
 		cv::Mat1b unverifiable, unverifiableMarked;
 		warpByModel(scene.right, disparity, geometry, warped, unverifiable);
 		// Columns rectification filled from outside the camera's image make
@@ -359,7 +359,7 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 		rng.fill(filled, cv::RNG::UNIFORM, 0, 2);
 		filled *= 255;
 		warpByModel(scene.right, disparity, geometry, warpedMarked, unverifiableMarked, filled);
-		ASSERT_EQ(std::memcmp(warped.data, warpedMarked.data, warped.total() * sizeof(float)), 0);
+		ASSERT_EQ(std::memcmp(warped.data, warpedMarked.data, warped.total() * sizeof(uint16_t)), 0);
 		cv::Mat1f mapX(disparity.size()), mapY(disparity.size()), rightF, expected;
 		for (int v = 0; v < mapX.rows; v++)
 			for (int u = 0; u < mapX.cols; u++)
@@ -372,8 +372,9 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 		for (int v = 0; v < mapX.rows; v++)
 			for (int u = 0; u < mapX.cols; u++, compared++)
 			{
-				ASSERT_EQ(std::memcmp(&warped(v, u), &expected(v, u), sizeof(float)), 0)
-					<< "row " << v << " column " << u << " (x " << mapX(v, u) << "): " << warped(v, u) << " vs " << expected(v, u);
+				// remap's values are whole multiples of 1/32 (so exact times 32).
+				ASSERT_EQ(float(warped(v, u)), expected(v, u) * 32.f)
+					<< "row " << v << " column " << u << " (x " << mapX(v, u) << "): " << warped(v, u) << " vs 32 x " << expected(v, u);
 				const bool outside = disparity(v, u) <= 0 || mapX(v, u) < 0 || mapX(v, u) > mapX.cols - 1;
 				ASSERT_EQ(unverifiable(v, u) != 0, outside) << "row " << v << " column " << u;
 				const int column = static_cast<int>(mapX(v, u));
@@ -389,8 +390,7 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 {
 	// The grid evaluation's NCC comes from these integer sums; they stand in
 	// for integral images in double, which were exact, so they must be the
-	// true sums exactly. Its premise: warpByModel's values are whole
-	// multiples of 1/32 grey level. A simulated frame warped by its model and
+	// true sums exactly. A simulated frame warped by its model and
 	// by random disparities (columns past the edges: unverifiable pixels),
 	// windows of every size the evaluation accepts, rows visited in steps
 	// that slide the sums and steps that start them afresh.
@@ -401,12 +401,9 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 	size_t compared = 0;
 	for (const cv::Mat1f& disparity : {scene.eval.modelDisparity, odd})
 	{
-		cv::Mat1f warped;
+		cv::Mat1w warped;
 		cv::Mat1b unverifiable;
 		warpByModel(scene.right, disparity, scene.stereo.geometry(), warped, unverifiable);
-		for (int v = 0; v < warped.rows; v++)
-			for (int u = 0; u < warped.cols; u++)
-				ASSERT_EQ(warped(v, u) * 32.f, std::round(warped(v, u) * 32.f)) << "row " << v << " column " << u;
 		for (int half : {1, 2, 5, 7, 15})
 		{
 			GridWindowSums sums(scene.left, warped, unverifiable, half);
@@ -422,7 +419,7 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 					for (int dv = -half; dv <= half; dv++)
 						for (int du = -half; du <= half; du++)
 						{
-							const double a = scene.left(v + dv, u + du), b = warped(v + dv, u + du);
+							const double a = scene.left(v + dv, u + du), b = warped(v + dv, u + du) / 32.0;
 							l += a, ll += a * a, w += b, ww += b * b, lw += a * b;
 							bad += unverifiable(v + dv, u + du) != 0;
 						}
@@ -444,7 +441,7 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 		// pass 2^32 many times over (they are kept modulo 2^32), and L W's
 		// window sum comes within 7 % of 2^31.
 		const cv::Mat1b white(120, 640, uint8_t{255});
-		const cv::Mat1f whiteWarped(white.size(), 255.f);
+		const cv::Mat1w whiteWarped(white.size(), 255 * 32);
 		const cv::Mat1b none = cv::Mat1b::zeros(white.size());
 		const int half = 15;
 		GridWindowSums sums(white, whiteWarped, none, half);
@@ -465,7 +462,7 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 		}
 	}
 	// 33 rows of W^2 would overflow the 32-bit column sums: refused.
-	cv::Mat1f warped;
+	cv::Mat1w warped;
 	cv::Mat1b unverifiable;
 	warpByModel(scene.right, scene.eval.modelDisparity, scene.stereo.geometry(), warped, unverifiable);
 	EXPECT_THROW(GridWindowSums(scene.left, warped, unverifiable, 16), std::invalid_argument);

@@ -27,14 +27,13 @@ enum Quantity
  * 31 x 8160^2 < 2^31), in one loop GCC vectorises (cloned for AVX2, whose
  * eight-wide 32-bit multiplies the baseline's SSE2 lacks). */
 LVF_VECTOR_CLONES void accumulateRow(int sign,
-	const uint8_t* __restrict left, const float* __restrict warped, const uint8_t* __restrict bad, int n,
+	const uint8_t* __restrict left, const uint16_t* __restrict warped32, const uint8_t* __restrict bad, int n,
 	int32_t* __restrict l, int32_t* __restrict ll, int32_t* __restrict w, int32_t* __restrict ww,
 	int32_t* __restrict lw, int32_t* __restrict unverifiable)
 {
 	for (int x = 0; x < n; x++)
 	{
-		// Exact: W is a multiple of 1/32 grey level, times a power of two.
-		const int32_t a = left[x], b = static_cast<int32_t>(warped[x] * 32.f);
+		const int32_t a = left[x], b = warped32[x];
 		l[x] += sign * a;
 		ll[x] += sign * a * a;
 		w[x] += sign * b;
@@ -96,10 +95,10 @@ LVF_VECTOR_CLONES void prefixSums64(const int32_t* __restrict columns, int n, in
 }  // namespace
 
 GridWindowSums::GridWindowSums(
-	const cv::Mat1b& left, const cv::Mat1f& warped, const cv::Mat1b& unverifiable, int half)
-	: m_left(left), m_warped(warped), m_unverifiable(unverifiable), m_half(half)
+	const cv::Mat1b& left, const cv::Mat1w& warped32, const cv::Mat1b& unverifiable, int half)
+	: m_left(left), m_warped32(warped32), m_unverifiable(unverifiable), m_half(half)
 {
-	assert(left.size() == warped.size() && left.size() == unverifiable.size());
+	assert(left.size() == warped32.size() && left.size() == unverifiable.size());
 	// The column sums of W^2 are 32-bit: 31 rows of (32 x 255)^2 fit, 33 do not.
 	if (half < 0 || 2 * half + 1 > kMaxWindow)
 		throw std::invalid_argument("GridWindowSums: window side " + std::to_string(2 * half + 1) + " outside 1.." + std::to_string(kMaxWindow));
@@ -115,7 +114,7 @@ void GridWindowSums::addRow(int v, int sign)
 {
 	auto c = [&](int q) { return m_columns[q].data(); };
 	const uint8_t* l = m_left.ptr<uint8_t>(v);
-	const float* w = m_warped.ptr<float>(v);
+	const uint16_t* w = m_warped32.ptr<uint16_t>(v);
 	const uint8_t* bad = m_unverifiable.ptr<uint8_t>(v);
 	accumulateRow(sign, l, w, bad, m_left.cols, c(L), c(LL), c(W), c(WW), c(LW), c(Bad));
 }

@@ -52,9 +52,9 @@ double noiseStdOf(const cv::Mat1b& left, const RectificationEffects& rectificati
  * cannot be judged at: those the warp marks, and those rectification
  * filled from outside the left image. */
 void warpForJudging(const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	const RectificationEffects& rectification, cv::Mat1f& warped, cv::Mat1b& unverifiable)
+	const RectificationEffects& rectification, cv::Mat1w& warped32, cv::Mat1b& unverifiable)
 {
-	warpByModel(right, modelDisparity, geometry, warped, unverifiable, rectification.rightNotImaged);
+	warpByModel(right, modelDisparity, geometry, warped32, unverifiable, rectification.rightNotImaged);
 	if (!rectification.leftNotImaged.empty()) unverifiable.setTo(255, rectification.leftNotImaged);
 }
 }  // namespace
@@ -71,9 +71,11 @@ ModelEvaluation ModelEvaluator::evaluate(
 	const cv::Size size = left.size();
 	const cv::Size window(m_options.windowSize, m_options.windowSize);
 
-	cv::Mat1f warped;
+	cv::Mat1w warped32;
 	cv::Mat1b unverifiable;
-	warpForJudging(right, modelDisparity, geometry, rectification, warped, unverifiable);
+	warpForJudging(right, modelDisparity, geometry, rectification, warped32, unverifiable);
+	cv::Mat1f warped;
+	warped32.convertTo(warped, CV_32F, 1.0 / 32);  // exact: a power of two
 	// A window touching an unverifiable pixel mixes in meaningless values.
 	cv::dilate(unverifiable, unverifiable, cv::Mat::ones(window, CV_8U));
 
@@ -120,9 +122,9 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	out.noiseStd = noiseStdOf(left, rectification);
 	out.textureGate = m_options.textureGate(out.noiseStd);
 	const cv::Size size = left.size();
-	cv::Mat1f warped;
+	cv::Mat1w warped32;
 	cv::Mat1b unverifiable;
-	warpForJudging(right, modelDisparity, geometry, rectification, warped, unverifiable);
+	warpForJudging(right, modelDisparity, geometry, rectification, warped32, unverifiable);
 
 	// The grid's rows and columns where a window fits; every one is
 	// written below.
@@ -143,7 +145,7 @@ ModelEvaluation ModelEvaluator::evaluateGrid(
 	std::vector<decltype(out.counts)> bandCounts(static_cast<size_t>(bands.count()), decltype(out.counts){});
 	bands.forEach([&](int b, int firstRow, int endRow) {
 		// Window sums on the grid's rows only, exact integers (GridWindowSums.h).
-		GridWindowSums sums(left, warped, unverifiable, half);
+		GridWindowSums sums(left, warped32, unverifiable, half);
 		GridRowNcc row(area, minVar);
 		auto& counts = bandCounts[static_cast<size_t>(b)];
 		for (int v = firstRow; v < endRow; v += stride)

@@ -18,22 +18,13 @@ namespace
 constexpr int kSubpixelBits = 5;
 constexpr int kSubpixelSteps = 1 << kSubpixelBits;
 
-/** Its linear weights of the right neighbour, k / 32, computed as its
- * table is (the left neighbour's is 1 - that, exact in float). */
-std::array<float, kSubpixelSteps> rightWeights()
-{
-	std::array<float, kSubpixelSteps> w{};
-	for (int k = 0; k < kSubpixelSteps; k++) w[size_t(k)] = (1.f / kSubpixelSteps) * float(k);
-	return w;
-}
-
 /** One row of the warp: the right image's row `row` sampled where the
  * model sends each left column. */
 struct WarpRow
 {
 	const float* disparity;
 	const uint8_t* row;
-	float* out;
+	uint16_t* out;
 	uint8_t* bad;
 	int width;
 	float cxOffset;
@@ -43,23 +34,19 @@ struct WarpRow
 	/** Columns [u0, u1), one at a time. */
 	void plain(int u0, int u1) const
 	{
-		static const std::array<float, kSubpixelSteps> kRightWeight = rightWeights();
 		const float lastColumn = static_cast<float>(width - 1);
 		for (int u = u0; u < u1; u++)
 		{
 			const float x = columnAt(u);
 			bad[u] = disparity[u] <= 0 || x < 0 || x > lastColumn ? 255 : 0;
 			// remap rounds the column to the nearest 1/32 (ties to even) and
-			// weights its two neighbours; outside the image they are 0.
+			// weights its two neighbours k / 32 and 1 - k / 32; outside the
+			// image they are 0.
 			const int fixed = cvRound(x * kSubpixelSteps);
-			const int left = fixed >> kSubpixelBits;
-			const float w1 = kRightWeight[size_t(fixed & (kSubpixelSteps - 1))], w0 = 1.f - w1;
-			if (static_cast<unsigned>(left) < static_cast<unsigned>(width - 1))
-				out[u] = float(row[left]) * w0 + float(row[left + 1]) * w1;
-			else if (left >= width || left + 1 < 0)
-				out[u] = 0.f;
-			else
-				out[u] = (left >= 0 ? float(row[left]) : 0.f) * w0 + (left + 1 < width ? float(row[left + 1]) : 0.f) * w1;
+			const int left = fixed >> kSubpixelBits, k = fixed & (kSubpixelSteps - 1);
+			const int p0 = left >= 0 && left < width ? row[left] : 0;
+			const int p1 = left + 1 >= 0 && left + 1 < width ? row[left + 1] : 0;
+			out[u] = static_cast<uint16_t>(p0 * (kSubpixelSteps - k) + p1 * k);
 		}
 	}
 
@@ -79,9 +66,10 @@ struct WarpRow
 	/** The same, eight columns at a time: the two neighbours of each
 	 * fetched by one gather (which the compiler does not emit for bytes;
 	 * the plain row took 0.65 ms of a 640x480 frame, this 0.23 in a
-	 * throw-away timing loop). The same operations as plain(), so the same
-	 * bits: no fused multiply-add (AVX2 has none), the rounding
-	 * conversion in the default round-to-nearest-even as cvRound's.
+	 * throw-away timing loop). The same column as plain()'s, so the same
+	 * values: no fused multiply-add (AVX2 has none), the rounding
+	 * conversion in the default round-to-nearest-even as cvRound's, the
+	 * weighting in integers.
 	 * Blocks with a column whose 4-byte gather would leave [0, width)
 	 * go the plain way. */
 	__attribute__((target("avx2"))) void avx2() const
@@ -97,6 +85,7 @@ struct WarpRow
 		const __m256 lanes = _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7), zero = _mm256_setzero_ps();
 		const __m256 lastColumn = _mm256_set1_ps(static_cast<float>(width - 1));
 		const __m256i lowByte = _mm256_set1_epi32(0xff), lastGather = _mm256_set1_epi32(width - 4);
+		const __m256i steps = _mm256_set1_epi32(kSubpixelSteps), fraction = _mm256_set1_epi32(kSubpixelSteps - 1);
 		int u = 0;
 		for (; u + 8 <= width; u += 8)
 		{
@@ -118,13 +107,17 @@ struct WarpRow
 			const uint64_t flags = kFlagBytes[size_t(_mm256_movemask_ps(outside))];
 			std::memcpy(bad + u, &flags, sizeof flags);
 			const __m256i pairs = _mm256_i32gather_epi32(reinterpret_cast<const int*>(row), left, 1);
-			const __m256 p0 = _mm256_cvtepi32_ps(_mm256_and_si256(pairs, lowByte));
-			const __m256 p1 = _mm256_cvtepi32_ps(_mm256_and_si256(_mm256_srli_epi32(pairs, 8), lowByte));
-			const __m256 w1 = _mm256_mul_ps(
-				_mm256_set1_ps(1.f / kSubpixelSteps),
-				_mm256_cvtepi32_ps(_mm256_and_si256(fixed, _mm256_set1_epi32(kSubpixelSteps - 1))));
-			const __m256 w0 = _mm256_sub_ps(_mm256_set1_ps(1.f), w1);
-			_mm256_storeu_ps(out + u, _mm256_add_ps(_mm256_mul_ps(p0, w0), _mm256_mul_ps(p1, w1)));
+			// p0 (32 - k) + p1 k as one 16-bit multiply-add of the words
+			// (p0, p1) and (32 - k, k).
+			const __m256i p0 = _mm256_and_si256(pairs, lowByte);
+			const __m256i p1 = _mm256_and_si256(_mm256_srli_epi32(pairs, 8), lowByte);
+			const __m256i k = _mm256_and_si256(fixed, fraction);
+			const __m256i sums = _mm256_madd_epi16(_mm256_or_si256(p0, _mm256_slli_epi32(p1, 16)),
+				_mm256_or_si256(_mm256_sub_epi32(steps, k), _mm256_slli_epi32(k, 16)));
+			// Eight 32-bit sums to 16 bits: packed within each half, the
+			// halves' low quarters then brought together.
+			const __m256i packed = _mm256_permute4x64_epi64(_mm256_packus_epi32(sums, sums), 0b1000);
+			_mm_storeu_si128(reinterpret_cast<__m128i*>(out + u), _mm256_castsi256_si128(packed));
 		}
 		plain(u, width);
 	}
@@ -134,14 +127,14 @@ struct WarpRow
 
 void warpByModel(
 	const cv::Mat1b& right, const cv::Mat1f& modelDisparity, const RectifiedGeometry& geometry,
-	cv::Mat1f& warped, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged)
+	cv::Mat1w& warped32, cv::Mat1b& unverifiable, const cv::Mat1b& rightNotImaged)
 {
 	const cv::Size size = right.size();
-	warped.create(size);
+	warped32.create(size);
 	unverifiable.create(size);
 	// Rows are independent: on OpenCV's threads (RowBands.h).
 	lvf::common::forEachRow(size.height, [&](int v) {
-		const WarpRow row{modelDisparity.ptr<float>(v), right.ptr<uint8_t>(v), warped.ptr<float>(v),
+		const WarpRow row{modelDisparity.ptr<float>(v), right.ptr<uint8_t>(v), warped32.ptr<uint16_t>(v),
 			unverifiable.ptr<uint8_t>(v), size.width, static_cast<float>(geometry.cxOffset)};
 #ifdef LVF_HAVE_AVX2_INTRINSICS
 		if (lvf::common::cpuHasAvx2())

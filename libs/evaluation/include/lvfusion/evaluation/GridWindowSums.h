@@ -5,8 +5,8 @@
 // (ModelEvaluator::evaluateGrid), as exact integers.
 //
 // W holds whole multiples of 1/32 grey level (warpByModel interpolates with
-// cv::remap's weights k / 32 between whole grey levels, every product and
-// sum exact in float), so 32 W is an integer and every sum is too: the same
+// cv::remap's weights k / 32 between whole grey levels, and gives 32 W as
+// 16-bit integers), so every sum is an integer: the same
 // values, to the last bit, as whole-image integral images in double gave
 // (they were exact as well), without writing four 640x480 images of doubles
 // per frame. Column sums over the window's rows are kept for the current
@@ -27,8 +27,8 @@ class GridWindowSums
 	/** The largest window side (ModelEvaluator's window_size allows no more). */
 	static constexpr int kMaxWindow = 31;
 	/** Sums of (2 half + 1)^2 windows, 2 half + 1 <= kMaxWindow (else
-	 * std::invalid_argument); W as warpByModel produces it. */
-	GridWindowSums(const cv::Mat1b& left, const cv::Mat1f& warped, const cv::Mat1b& unverifiable, int half);
+	 * std::invalid_argument); 32 W as warpByModel produces it. */
+	GridWindowSums(const cv::Mat1b& left, const cv::Mat1w& warped32, const cv::Mat1b& unverifiable, int half);
 
 	/** Prepares the windows centred on row v (rows v - half .. v + half must
 	 * lie in the image); faster when v only grows. */
@@ -48,7 +48,7 @@ class GridWindowSums
 	void addRow(int v, int sign);
 
 	const cv::Mat1b& m_left;
-	const cv::Mat1f& m_warped;
+	const cv::Mat1w& m_warped32;
 	const cv::Mat1b& m_unverifiable;
 	const int m_half;
 	int m_row = -1;
