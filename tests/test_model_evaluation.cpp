@@ -334,11 +334,11 @@ TEST(ModelWarp, IsOpenCvsRemapAlongTheRowsBitForBit)
 {
 	// warpByModel does by hand what cv::remap does with maps x = u + cxOffset
 	// - d, y = v, in 1/32 grey levels; the evaluation's NCC is computed from
-	// it, so it must be 32 times remap's to the last bit. A simulated frame with the room's model, and
-	// disparities of every kind: fractional, none (0) or negative, sending
-	// the column past either edge of the image (the vector path takes
-	// blocks of eight columns, the plain one those where a column falls
-	// near or past an edge).
+	// it, so it must be 32 times remap's to the last bit. A simulated frame
+	// with the room's model, and disparities of every kind: fractional, none
+	// (0) or negative, sending the column past either edge of the image (the
+	// vector path takes blocks of eight columns, the plain one those where a
+	// column falls near or past an edge).
 	const Scene scene = evaluate(lvf::test::roomWorld("  - {pose: [2.5, 0.3, 0.5], size: [0.4, 0.4, 0.4]}\n"));
 	cv::RNG rng(3);
 	cv::Mat1f odd(scene.right.size());

@@ -27,8 +27,9 @@ cv::Mat1b pyramidDown(const cv::Mat1b& image)
 
 struct MatchingLevel::Images
 {
-	/** The neighbour pairs from the grey images: a quarter of the float
-	 * ones' bytes to read. */
+	/** The grey images themselves (shared, not copied): the neighbour pairs,
+	 * the window statistics and the sub-pixel steps all read whole grey
+	 * levels. */
 	Images(const cv::Mat1b& l, const cv::Mat1b& r, int h, RowGrid grid)
 		: half(h), left(l), right(r), leftPairs(neighbourPairs(l)),
 		  rightPairs(neighbourPairs(r)), rows(std::move(grid))

@@ -4,7 +4,7 @@
 // the focused search's arithmetic (~6 * 10^7 products per 640x480 frame).
 //
 // Both matching levels hold grey images (0..255; the half-resolution one is
-// cv::pyrDown's, rounded to whole grey levels), so the products are 16-bit integers and the sums
+// cv::pyrDown's 8-bit one), so the products are 16-bit integers and the sums
 // exact 32-bit ones. The images are kept as "neighbour pairs": pixel x and
 // pixel x + 1 of a row as two 16-bit integers in one 32-bit word. One AVX2
 // multiply-add (vpmaddwd) then takes two window columns of eight right

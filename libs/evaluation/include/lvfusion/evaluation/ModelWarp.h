@@ -22,8 +22,8 @@ namespace lvf::evaluation
  * neighbours weighted k / 32 and 1 - k / 32 as remap's table weights them,
  * so that remap's float values are whole multiples of 1/32. Kept as 16-bit
  * integers: the model check's window sums are integers (GridWindowSums.h),
- * and the image is half the bytes of remap's floats. Written by hand because the
- * warp moves pixels along rows only: remap's two-dimensional
+ * and the image is half the bytes of remap's floats. Written by hand
+ * because the warp moves pixels along rows only: remap's two-dimensional
  * interpolation and the two float maps it needs took 1.5 ms of a 640x480
  * frame, this 0.65 one column at a time and 0.23 with AVX2 gathers. */
 void warpByModel(
