@@ -137,109 +137,112 @@ struct FocusedEpipolarSearch::RowsFound
 	DepthSearchStats stats;
 };
 
+void DepthSearchStats::count(SearchOutcome o)
+{
+	switch (o)
+	{
+		case SearchOutcome::NotSearched: return;
+		case SearchOutcome::Untextured: skippedUntextured++; return;
+		case SearchOutcome::EmptyRange: skippedEmptyRange++; return;
+		case SearchOutcome::BehindNearer: skippedBehindNearer++; return;
+		default: break;
+	}
+	// The rest were matched.
+	searchedPixels++;
+	switch (o)
+	{
+		case SearchOutcome::Weak: rejectedWeak++; break;
+		case SearchOutcome::NotPeak: rejectedNotPeak++; break;
+		case SearchOutcome::Ambiguous: rejectedAmbiguous++; break;
+		case SearchOutcome::LeftRight: rejectedLeftRight++; break;
+		case SearchOutcome::OutOfBand: rejectedOutOfBand++; break;
+		case SearchOutcome::CoreMismatch: rejectedCore++; break;
+		case SearchOutcome::Accepted: accepted++; break;
+		default: break;
+	}
+}
+
 void FocusedEpipolarSearch::searchRows(
 	int firstRow, int endRow, const Pass& pass, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame,
 	RowsFound& found, cv::Mat1b& outcome) const
 {
+	const int W = full.left.cols;
+	for (int v = firstRow; v < endRow; v += pass.rowStep)
+		for (int u = frame.half; u < W - frame.half; u += m_options.pixelStride)
+		{
+			if (!leftToTheSearch(static_cast<PixelState>(frame.evaluation.state(v, u)))) continue;
+			const SearchOutcome o = searchPixel(u, v, pass, full, coarse, frame, found.points);
+			outcome(v, u) = static_cast<uint8_t>(o);
+			found.stats.count(o);
+		}
+}
+
+SearchOutcome FocusedEpipolarSearch::searchPixel(
+	int u, int v, const Pass& pass, MatchingLevel& full, MatchingLevel* coarse, const Frame& frame,
+	std::vector<VisualPoint>& points) const
+{
 	const auto& evaluation = frame.evaluation;
 	const auto& g = frame.g;
-	const auto& band = frame.band;
-	const int half = frame.half;
-	const int W = full.left.cols;
+	// The pixel's place on the evaluation's grid, once (a division each way).
+	const int gridRow = evaluation.grid.index(v), gridColumn = evaluation.grid.index(u);
+	const float leftStd = evaluation.gridLeftStd(gridRow, gridColumn);
+	if (leftStd < frame.textureGate) return SearchOutcome::Untextured;
 	const Eigen::Vector3d C = g.cameraCentre();
 	const double fB = g.fB();
-	auto& stats = found.stats;
-	const int stride = m_options.pixelStride;
-	for (int v = firstRow; v < endRow; v += pass.rowStep)
-		for (int u = half; u < W - half; u += stride)
-		{
-			if (!leftToTheSearch(static_cast<PixelState>(evaluation.state(v, u)))) continue;
-			auto mark = [&](SearchOutcome o, size_t& counter) {
-				outcome(v, u) = static_cast<uint8_t>(o);
-				counter++;
-			};
-			// The pixel's place on the evaluation's grid, once (a division
-			// each way).
-			const int gridRow = evaluation.grid.index(v), gridColumn = evaluation.grid.index(u);
-			const float leftStd = evaluation.gridLeftStd(gridRow, gridColumn);
-			if (leftStd < frame.textureGate)
-			{
-				mark(SearchOutcome::Untextured, stats.skippedUntextured);
-				continue;
-			}
-			const double dModel = evaluation.modelDisparity(v, u);
-			const Eigen::Vector3d ray = g.robotRay(u, v);
-			const bool floorModel = m_options.floorDisparityMargin > 0 && dModel > 0 &&
-				std::abs(C.z() + fB / dModel * ray.z() - frame.floorHeight) < kOnTheFloor;
-			DisparitySet set = allowedDisparities(u, dModel, ray, C, half, g, band, floorModel);
-			if (set.empty() || set.integerCount() == 0)
-			{
-				mark(SearchOutcome::EmptyRange, stats.skippedEmptyRange);
-				continue;
-			}
-			if (pass.nearer)
-			{
-				// Depth Z puts the point Z |ray_xy| from the camera, horizontally.
-				const double bound = pass.nearer->along(ray);
-				if (std::isfinite(bound)) set.intersect({fB * std::hypot(ray.x(), ray.y()) / bound, kInfinity});
-				if (set.empty() || set.integerCount() == 0)
-				{
-					mark(SearchOutcome::BehindNearer, stats.skippedBehindNearer);
-					continue;
-				}
-			}
-			stats.searchedPixels++;
-			const PixelQuery query{u, v, evaluation.gridLeftMean(gridRow, gridColumn), leftStd, dModel, set, g};
-			const Match m = coarse ? matchCoarseToFine(full, *coarse, query) : matchAtFullResolution(full, query);
-			switch (m.outcome)
-			{
-				case SearchOutcome::Weak: mark(m.outcome, stats.rejectedWeak); continue;
-				case SearchOutcome::NotPeak: mark(m.outcome, stats.rejectedNotPeak); continue;
-				case SearchOutcome::CoreMismatch: mark(m.outcome, stats.rejectedCore); continue;
-				case SearchOutcome::Ambiguous: mark(m.outcome, stats.rejectedAmbiguous); continue;
-				case SearchOutcome::LeftRight: mark(m.outcome, stats.rejectedLeftRight); continue;
-				case SearchOutcome::Accepted: break;
-				default: continue;
-			}
-			// Last, on what passed everything else: the fewest pixels.
-			if (m_options.shiftedWindows && dModel > 0 && modelExplainsASide(full, query, m.x))
-			{
-				mark(SearchOutcome::CoreMismatch, stats.rejectedCore);
-				continue;
-			}
-			// Parabola through the peak and its neighbours, then the images.
-			const float curvature = m.before - 2 * m.score + m.after;
-			const float shift = curvature < 0 ? 0.5f * (m.before - m.after) / curvature : 0.f;
-			const double column =
-				frame.refinement.refine(full.left, full.right, u, v, m.x + shift, m_options.subpixelIterations);
-			const double disparity = u + g.cxOffset - column;
-			// Refined to no disparity, the point would lie at infinity (or
-			// behind the cameras): no depth in the band either.
-			const bool finite = disparity > 0;
-			const Eigen::Vector3d p = finite ? Eigen::Vector3d(C + (fB / disparity) * ray) : C;
-			if (!finite || !band.contains(p.z()))
-			{
-				mark(SearchOutcome::OutOfBand, stats.rejectedOutOfBand);
-				continue;
-			}
-			found.points.push_back({static_cast<float>(u), static_cast<float>(v),
-								  static_cast<float>(disparity), m.score, p});
-			mark(SearchOutcome::Accepted, stats.accepted);
-			// The outermost grid columns' windows also cover the image's last
-			// columns, where no window fits: their match is the depth there
-			// too (rays at the image's edge would see nothing otherwise).
-			auto extendTo = [&](int ue) {
-				const Eigen::Vector3d edgeRay = g.robotRay(ue, v);
-				const Eigen::Vector3d pe = C + (fB / disparity) * edgeRay;
-				if (band.contains(pe.z()))
-					found.points.push_back({static_cast<float>(ue), static_cast<float>(v),
-										  static_cast<float>(disparity), m.score, pe});
-			};
-			if (u - stride < half)
-				for (int ue = u - stride; ue >= std::max(0, u - half); ue -= stride) extendTo(ue);
-			if (u + stride > W - 1 - half)
-				for (int ue = u + stride; ue <= std::min(W - 1, u + half); ue += stride) extendTo(ue);
-		}
+	const double dModel = evaluation.modelDisparity(v, u);
+	const Eigen::Vector3d ray = g.robotRay(u, v);
+	const bool floorModel = m_options.floorDisparityMargin > 0 && dModel > 0 &&
+		std::abs(C.z() + fB / dModel * ray.z() - frame.floorHeight) < kOnTheFloor;
+	DisparitySet set = allowedDisparities(u, dModel, ray, C, frame.half, g, frame.band, floorModel);
+	if (set.empty() || set.integerCount() == 0) return SearchOutcome::EmptyRange;
+	if (pass.nearer)
+	{
+		// Depth Z puts the point Z |ray_xy| from the camera, horizontally.
+		const double bound = pass.nearer->along(ray);
+		if (std::isfinite(bound)) set.intersect({fB * std::hypot(ray.x(), ray.y()) / bound, kInfinity});
+		if (set.empty() || set.integerCount() == 0) return SearchOutcome::BehindNearer;
+	}
+	const PixelQuery query{u, v, evaluation.gridLeftMean(gridRow, gridColumn), leftStd, dModel, set, g};
+	const Match m = coarse ? matchCoarseToFine(full, *coarse, query) : matchAtFullResolution(full, query);
+	if (m.outcome != SearchOutcome::Accepted) return m.outcome;
+	// Last, on what passed everything else: the fewest pixels.
+	if (m_options.shiftedWindows && dModel > 0 && modelExplainsASide(full, query, m.x))
+		return SearchOutcome::CoreMismatch;
+	return triangulate(query, m, ray, full, frame, points);
+}
+
+SearchOutcome FocusedEpipolarSearch::triangulate(const PixelQuery& q, const Match& m, const Eigen::Vector3d& ray,
+	MatchingLevel& full, const Frame& frame, std::vector<VisualPoint>& points) const
+{
+	const auto& g = frame.g;
+	const Eigen::Vector3d C = g.cameraCentre();
+	const double fB = g.fB();
+	// Parabola through the peak and its neighbours, then the images.
+	const float curvature = m.before - 2 * m.score + m.after;
+	const float shift = curvature < 0 ? 0.5f * (m.before - m.after) / curvature : 0.f;
+	const double column =
+		frame.refinement.refine(full.left, full.right, q.u, q.v, m.x + shift, m_options.subpixelIterations);
+	const double disparity = q.u + g.cxOffset - column;
+	// Refined to no disparity, the point would lie at infinity (or behind
+	// the cameras): no depth in the band either.
+	const bool finite = disparity > 0;
+	const Eigen::Vector3d p = finite ? Eigen::Vector3d(C + (fB / disparity) * ray) : C;
+	if (!finite || !frame.band.contains(p.z())) return SearchOutcome::OutOfBand;
+	points.push_back({static_cast<float>(q.u), static_cast<float>(q.v), static_cast<float>(disparity), m.score, p});
+	// The outermost grid columns' windows also cover the image's last
+	// columns, where no window fits: their match is the depth there too
+	// (rays at the image's edge would see nothing otherwise).
+	const int W = full.left.cols, half = frame.half, stride = m_options.pixelStride;
+	auto extendTo = [&](int ue) {
+		const Eigen::Vector3d pe = C + (fB / disparity) * g.robotRay(ue, q.v);
+		if (frame.band.contains(pe.z()))
+			points.push_back({static_cast<float>(ue), static_cast<float>(q.v), static_cast<float>(disparity), m.score, pe});
+	};
+	if (q.u - stride < half)
+		for (int ue = q.u - stride; ue >= std::max(0, q.u - half); ue -= stride) extendTo(ue);
+	if (q.u + stride > W - 1 - half)
+		for (int ue = q.u + stride; ue <= std::min(W - 1, q.u + half); ue += stride) extendTo(ue);
+	return SearchOutcome::Accepted;
 }
 
 FocusedEpipolarSearch::RowsFound FocusedEpipolarSearch::searchPass(

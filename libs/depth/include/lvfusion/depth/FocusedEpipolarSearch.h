@@ -79,6 +79,8 @@ struct DepthSearchStats
 		rejectedLeftRight += o.rejectedLeftRight, rejectedCore += o.rejectedCore;
 		return *this;
 	}
+	/** Counts one grid pixel's outcome (NotSearched: nothing). */
+	void count(SearchOutcome o);
 };
 
 class FocusedEpipolarSearch
@@ -237,6 +239,10 @@ class FocusedEpipolarSearch
 	void searchRows(
 		int firstRow, int endRow, const Pass& pass, MatchingLevel& full, MatchingLevel* coarse,
 		const Frame& frame, RowsFound& found, cv::Mat1b& outcome) const;
+	/** One grid pixel left to the search: the outcome, and with Accepted
+	 * its point (and the image-edge columns' beside it) added to `points`. */
+	SearchOutcome searchPixel(int u, int v, const Pass& pass, MatchingLevel& full, MatchingLevel* coarse,
+		const Frame& frame, std::vector<VisualPoint>& points) const;
 	/** Criteria a, b, c and the band for the left pixel in column u whose
 	 * ray (robot frame) leaves the camera centre `camera`; `floorModel`:
 	 * the model's surface there is the floor (floorDisparityMargin). */
@@ -280,6 +286,12 @@ class FocusedEpipolarSearch
 	 * left windows of row v over the disparities of right columns
 	 * [xNear, xFar] as seen from u, scores best at u (+-1). */
 	bool findsItsWayBack(MatchingLevel& level, int u, int v, int x, int xNear, int xFar) const;
+	/** The accepted match `m` of pixel q, whose ray is `ray`, refined to
+	 * sub-pixel disparity and triangulated: Accepted with its point added to
+	 * `points` (and, at the grid's outermost columns, the image-edge
+	 * columns' its window covers), or OutOfBand. */
+	SearchOutcome triangulate(const PixelQuery& q, const Match& m, const Eigen::Vector3d& ray, MatchingLevel& full,
+		const Frame& frame, std::vector<VisualPoint>& points) const;
 
 	TOptions m_options;
 };
