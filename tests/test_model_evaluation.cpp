@@ -415,21 +415,23 @@ TEST(GridWindowSums, AreTheExactWindowSumsOfTheWarpedPair)
 				sums.moveTo(v);
 				for (int u = half; u < warped.cols - half; u += 37, compared++)
 				{
-					double l = 0, ll = 0, w = 0, ww = 0, lw = 0, bad = 0;
+					// Summed pixel by pixel, in the sums' own units: the warp's
+					// values are 32 x the grey level already.
+					double l = 0, ll = 0, w32 = 0, ww1024 = 0, lw32 = 0, bad = 0;
 					for (int dv = -half; dv <= half; dv++)
 						for (int du = -half; du <= half; du++)
 						{
-							const double a = scene.left(v + dv, u + du), b = warped(v + dv, u + du) / 32.0;
-							l += a, ll += a * a, w += b, ww += b * b, lw += a * b;
+							const double a = scene.left(v + dv, u + du), b32 = warped(v + dv, u + du);
+							l += a, ll += a * a, w32 += b32, ww1024 += b32 * b32, lw32 += a * b32;
 							bad += unverifiable(v + dv, u + du) != 0;
 						}
 					const GridWindowSums::Sums got = sums.at(u);
 					SCOPED_TRACE(testing::Message() << "half " << half << " at (" << u << ", " << v << ")");
 					ASSERT_EQ(double(got.l), l);
 					ASSERT_EQ(double(got.ll), ll);
-					ASSERT_EQ(double(got.w32), 32 * w);
-					ASSERT_EQ(double(got.ww1024), 1024 * ww);
-					ASSERT_EQ(double(got.lw32), 32 * lw);
+					ASSERT_EQ(double(got.w32), w32);
+					ASSERT_EQ(double(got.ww1024), ww1024);
+					ASSERT_EQ(double(got.lw32), lw32);
 					ASSERT_EQ(double(got.unverifiable), bad);
 				}
 			}
