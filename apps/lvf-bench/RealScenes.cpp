@@ -56,19 +56,21 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 
 	StageMedians times;
 	std::map<std::string, mrpt::obs::CObservation2DRangeScan::Ptr> fused;
-	for (int pass = 0; pass < passes; pass++)
-	{
-		const auto r = fusion.process(scan, stereo, imported.scene.name);
-		recordFusionTimes(times, kFusionName, r.times);
-		fused[kFusionName] = r.fused;
-		const auto q = fusionOverSceneRange.process(scan, stereo, imported.scene.name);
-		recordFusionTimes(times, kFusionSceneRange, q.times);
-		fused[kFusionSceneRange] = q.fused;
-		fused[kSgbmName] = denseFusedScan(
-			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::SemiGlobal, &times, kSgbmName);
-		fused[kBmName] = denseFusedScan(
-			left, right, rectified.geometry(), options, denseZMin, scan, DenseMatcher::Block, &times, kBmName);
-	}
+	// Each method its passes in turn (SeededRooms.cpp says why).
+	auto fuseEachPass = [&](lvf::fusion::CLaserStereoFusion& method, const std::string& name) {
+		for (int pass = 0; pass < passes; pass++)
+		{
+			const auto r = method.process(scan, stereo, imported.scene.name);
+			recordFusionTimes(times, name, r.times);
+			fused[name] = r.fused;
+		}
+	};
+	fuseEachPass(fusion, kFusionName);
+	fuseEachPass(fusionOverSceneRange, kFusionSceneRange);
+	for (const auto& [matcher, name] :
+		{std::pair<DenseMatcher, std::string>{DenseMatcher::SemiGlobal, kSgbmName}, {DenseMatcher::Block, kBmName}})
+		for (int pass = 0; pass < passes; pass++)
+			fused[name] = denseFusedScan(left, right, rectified.geometry(), options, denseZMin, scan, matcher, &times, name);
 	const auto inView = lvf::metrics::bearingsInView(scan, imported.truth, stereo, options.band, options.depth.zMax);
 	std::cout << "  " << imported.scene.name << " (" << left.cols << "x" << left.rows << "; the dense matchers "
 			  << (calib.ndisp > 0 ? "over its disparities 0-" + std::to_string(calib.ndisp) : std::string("from z_min"))
