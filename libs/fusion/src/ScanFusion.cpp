@@ -106,25 +106,20 @@ void ScanFusion::hitsAround(const std::vector<std::vector<PlanePoint>>& byRay, s
 				hits.push_back({p.range, static_cast<float>((p.index - double(i)) / binRays), p.atImageEdge});
 }
 
-std::vector<float> ScanFusion::visualRanges(
-	const mrpt::obs::CObservation2DRangeScan& laser,
-	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched,
-	std::vector<bool>* bridged) const
+std::vector<std::vector<ScanFusion::PlanePoint>> ScanFusion::pointsUnderRays(
+	const mrpt::obs::CObservation2DRangeScan& laser, const std::vector<lvf::depth::VisualPoint>& points,
+	std::optional<SearchedColumns> searched)
 {
 	// Remembered points (VisualPointMemory) have no pixel: u is NaN.
 	auto atImageEdge = [&](float u) {
 		return searched && std::isfinite(u) && (u - searched->first < searched->step || searched->last - u < searched->step);
 	};
 	const size_t n = laser.getScanSize();
-	const double rayStep = lvf::rayStep(laser.aperture, n);
-	// A bin's width in rays: at least one.
-	const double binRays = std::max(1.0, mrpt::DEG2RAD(m_options.binWidthDeg) / rayStep);
 	// Into the laser's frame: R^T (p - t), its rows taken once (MRPT's
 	// per-point inverseComposePoint costs about as much as the rest here).
 	const Eigen::Matrix3d laserToRobot = laser.sensorPose.getRotationMatrix().asEigen();
 	const Eigen::Vector3d laserOrigin(laser.sensorPose.x(), laser.sensorPose.y(), laser.sensorPose.z());
 	const Eigen::RowVector3d xAxis = laserToRobot.col(0).transpose(), yAxis = laserToRobot.col(1).transpose();
-	// Each point under the ray it rounds to (a bin gathers from the rays it spans).
 	std::vector<std::vector<PlanePoint>> onPlane(n);
 	for (const auto& p : points)
 	{
@@ -136,42 +131,58 @@ std::vector<float> ScanFusion::visualRanges(
 		if (ray < 0 || ray >= long(n)) continue;
 		onPlane[size_t(ray)].push_back({index, static_cast<float>(std::hypot(x, y)), atImageEdge(p.u)});
 	}
+	return onPlane;
+}
 
-	std::vector<float> out(n, std::numeric_limits<float>::infinity());
+float ScanFusion::rangeOfOwnCluster(std::vector<Hit>& hits) const
+{
 	const size_t need = static_cast<size_t>(m_options.minPoints);
 	const float slack = static_cast<float>(m_options.centreSlack);
+	std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.range < b.range; });
+	// The nearest run of at least `need` points spanning at most the
+	// tolerance in range...
+	for (size_t k = 0; k + need <= hits.size(); k++)
+	{
+		if (hits[k + need - 1].range - hits[k].range > m_options.clusterTolerance) continue;
+		size_t end = k + need;
+		while (end < hits.size() && hits[end].range - hits[k].range <= m_options.clusterTolerance) end++;
+		// ...that also covers the bin's own bearing: at an obstacle's edge
+		// a bin may hold points from beside its ray, which the ray misses.
+		float lo = 1, hi = -1;
+		bool edge = false;
+		for (size_t j = k; j < end; j++)
+			lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset), edge |= hits[j].atImageEdge;
+		if (!edge && (lo > slack || hi < -slack)) continue;
+		return rangeAlongTheRay(hits.begin() + long(k), hits.begin() + long(end));
+	}
+	return std::numeric_limits<float>::infinity();
+}
+
+std::vector<float> ScanFusion::visualRanges(
+	const mrpt::obs::CObservation2DRangeScan& laser,
+	const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched,
+	std::vector<bool>* bridged) const
+{
+	const size_t n = laser.getScanSize();
+	const double rayStep = lvf::rayStep(laser.aperture, n);
+	// A bin's width in rays: at least one.
+	const double binRays = std::max(1.0, mrpt::DEG2RAD(m_options.binWidthDeg) / rayStep);
+	// Each point under the ray it rounds to (a bin gathers from the rays it spans).
+	const std::vector<std::vector<PlanePoint>> onPlane = pointsUnderRays(laser, points, searched);
+
+	std::vector<float> out(n, std::numeric_limits<float>::infinity());
 	std::vector<Hit> hits, around;	// reused from ray to ray
 	for (size_t i = 0; i < n; i++)
 	{
 		hitsAround(onPlane, i, binRays, 0.5, hits);
 		if (hits.empty()) continue;
-		if (hits.size() < need)
+		if (hits.size() >= static_cast<size_t>(m_options.minPoints))
+			out[i] = rangeOfOwnCluster(hits);
+		else if (m_options.neighbourBins > 0)
 		{
 			// Too few of its own: with its neighbours' (neighbour_bins).
-			if (m_options.neighbourBins > 0)
-			{
-				hitsAround(onPlane, i, binRays, m_options.neighbourBins + 0.5, around);
-				out[i] = rangeWithNeighbours(hits, around);
-			}
-			continue;
-		}
-		std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.range < b.range; });
-		// The nearest run of at least `need` points spanning at most the
-		// tolerance in range...
-		for (size_t k = 0; k + need <= hits.size(); k++)
-		{
-			if (hits[k + need - 1].range - hits[k].range > m_options.clusterTolerance) continue;
-			size_t end = k + need;
-			while (end < hits.size() && hits[end].range - hits[k].range <= m_options.clusterTolerance) end++;
-			// ...that also covers the bin's own bearing: at an obstacle's edge
-			// a bin may hold points from beside its ray, which the ray misses.
-			float lo = 1, hi = -1;
-			bool edge = false;
-			for (size_t j = k; j < end; j++)
-				lo = std::min(lo, hits[j].offset), hi = std::max(hi, hits[j].offset), edge |= hits[j].atImageEdge;
-			if (!edge && (lo > slack || hi < -slack)) continue;
-			out[i] = rangeAlongTheRay(hits.begin() + long(k), hits.begin() + long(end));
-			break;
+			hitsAround(onPlane, i, binRays, m_options.neighbourBins + 0.5, around);
+			out[i] = rangeWithNeighbours(hits, around);
 		}
 	}
 	if (m_options.bridgeWidth > 0)

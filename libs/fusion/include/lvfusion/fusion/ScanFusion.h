@@ -150,6 +150,14 @@ class ScanFusion
 		float range;
 		bool atImageEdge;
 	};
+	/** The points on the laser's plane, each under the ray its bearing
+	 * rounds to (out of the scan's aperture: dropped). */
+	static std::vector<std::vector<PlanePoint>> pointsUnderRays(const mrpt::obs::CObservation2DRangeScan& laser,
+		const std::vector<lvf::depth::VisualPoint>& points, std::optional<SearchedColumns> searched);
+	/** A bin's range from at least min_points points of its own (`hits`,
+	 * reordered): the nearest cluster that straddles its bearing (or lies
+	 * at the searched image's edge); +inf if none does. */
+	float rangeOfOwnCluster(std::vector<Hit>& hits) const;
 	/** Into `hits`: the points (in `byRay`, each under the ray it rounds
 	 * to) whose bearing lies within `halfWidths` bin widths of ray i's
 	 * (from -halfWidths inclusive to +halfWidths exclusive, so that 1-degree
