@@ -160,8 +160,8 @@ void printStageMedians(int passes)
 			recordFusionTimes(
 				medians, toRectify, fusionToRectify.process(*turned.scan, *turned.stereo, "frame", turned.odometry).times);
 		});
-		everyFrame([&](size_t k) { f.dense(k, lvf::depth::DenseMatcher::SemiGlobal, &medians, kSgbmName); });
-		everyFrame([&](size_t k) { f.dense(k, lvf::depth::DenseMatcher::Block, &medians, kBmName); });
+		for (const auto& [matcher, name] : kDenseMethods)
+			everyFrame([&, &matcher = matcher, &name = name](size_t k) { f.dense(k, matcher, &medians, name); });
 		if (cores > 1)
 			onCores([&] {
 				everyFrame([&](size_t k) {

@@ -10,7 +10,9 @@
 #include <lvfusion/depth/DenseStereoBaseline.h>
 #include <lvfusion/fusion/CLaserStereoFusion.h>
 
+#include <array>
 #include <string>
+#include <utility>
 
 namespace lvf::bench
 {
@@ -18,6 +20,9 @@ namespace lvf::bench
 inline const std::string kFusionName = "fusion (this paper)";
 inline const std::string kSgbmName = "StereoSGBM 3-way";
 inline const std::string kBmName = "StereoBM";
+/** The dense baselines, in the order every table runs and prints them. */
+inline const std::array<std::pair<lvf::depth::DenseMatcher, std::string>, 2> kDenseMethods{
+	{{lvf::depth::DenseMatcher::SemiGlobal, kSgbmName}, {lvf::depth::DenseMatcher::Block, kBmName}}};
 
 /** The fused scan of `laser` with the dense matcher's points over disparities
  * from depth `zMin` out; with `times`, the time of its two stages

@@ -33,7 +33,6 @@ std::vector<std::string> sceneFolders(const std::string& root)
 
 void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 {
-	using lvf::depth::DenseMatcher;
 	const lvf::fusion::CLaserStereoFusion::TOptions options;  // lvf-fuse's defaults
 	lvf::fusion::CLaserStereoFusion fusion(options);
 	const auto& scan = *imported.scan;
@@ -67,8 +66,7 @@ void benchScene(const lvf::middlebury::ImportedScene& imported, int passes)
 	};
 	fuseEachPass(fusion, kFusionName);
 	fuseEachPass(fusionOverSceneRange, kFusionSceneRange);
-	for (const auto& [matcher, name] :
-		{std::pair<DenseMatcher, std::string>{DenseMatcher::SemiGlobal, kSgbmName}, {DenseMatcher::Block, kBmName}})
+	for (const auto& [matcher, name] : kDenseMethods)
 		for (int pass = 0; pass < passes; pass++)
 			fused[name] = denseFusedScan(left, right, rectified.geometry(), options, denseZMin, scan, matcher, &times, name);
 	const auto inView = lvf::metrics::bearingsInView(scan, imported.truth, stereo, options.band, options.depth.zMax);

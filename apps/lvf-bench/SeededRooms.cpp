@@ -13,7 +13,6 @@ namespace lvf::bench
 {
 void printSeededRooms(uint32_t first, uint32_t last, int passes)
 {
-	using lvf::depth::DenseMatcher;
 	const lvf::fusion::CLaserStereoFusion::TOptions options;  // lvf-fuse's defaults
 	std::vector<SimulatedFrames> rooms;
 	size_t frameCount = 0;
@@ -49,8 +48,7 @@ void printSeededRooms(uint32_t first, uint32_t last, int passes)
 				scores["laser alone"].add(room.score(k, *frame.scan, options));
 			}
 		}
-		for (const auto& [matcher, name] :
-			{std::pair<DenseMatcher, std::string>{DenseMatcher::SemiGlobal, kSgbmName}, {DenseMatcher::Block, kBmName}})
+		for (const auto& [matcher, name] : kDenseMethods)
 			for (const auto& room : rooms)
 				for (size_t k = 0; k < room.frames.size(); k++)
 				{
