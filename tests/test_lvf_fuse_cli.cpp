@@ -179,8 +179,10 @@ TEST_F(LvfFuseCli, ThePointsFileHoldsEveryVisualPointEachBearingWasSetFrom)
 {
 	// --points: every visual point of every frame. They are the frames
 	// CSV's counts, lie in the robot's height band, and each visual range of
-	// the bearings CSV that was measured (not a closed gap) is the range of
-	// a point within neighbour_bins (2) + half a bin of its bearing.
+	// the bearings CSV that was measured (not a closed gap) comes from the
+	// points within neighbour_bins (2) + half a bin of its bearing: a
+	// point's range, or on a standing surface (standing_median_shift) one
+	// between two of their ranges at most cluster_tolerance (0.15 m) apart.
 	const std::string sample = "--input " + std::string(LVF_SAMPLES_DIR) + "/box_room.rawlog";
 	const auto r = fuse(sample + " --points --eval-every 0 --outdir out");
 	ASSERT_EQ(r.status, 0) << r.err;
@@ -207,9 +209,15 @@ TEST_F(LvfFuseCli, ThePointsFileHoldsEveryVisualPointEachBearingWasSetFrom)
 	{
 		if (b.at("visual_m").empty() || b.at("bridged") == "1") continue;
 		const double range = std::stod(b.at("visual_m")), bearing = std::stod(b.at("bearing_deg"));
-		const bool found = std::any_of(points.begin(), points.end(), [&](const auto& p) {
-			return p.at("frame") == b.at("frame") && std::abs(std::stod(p.at("range_m")) - range) < 0.0015 &&
-				std::abs(std::stod(p.at("bearing_deg")) - bearing) <= 2.5;
+		std::vector<double> around;	 // the ranges of the points near the bearing
+		for (const auto& p : points)
+			if (p.at("frame") == b.at("frame") && std::abs(std::stod(p.at("bearing_deg")) - bearing) <= 2.5)
+				around.push_back(std::stod(p.at("range_m")));
+		const double rounding = 0.0015;	 // the CSVs' millimetres
+		const bool found = std::any_of(around.begin(), around.end(), [&](double nearer) {
+			return nearer <= range + rounding && std::any_of(around.begin(), around.end(), [&](double farther) {
+				return farther >= range - rounding && farther - nearer <= 0.15 + rounding;
+			});
 		});
 		EXPECT_TRUE(found) << "frame " << b.at("frame") << ", " << bearing << " deg, " << range << " m";
 		explained += found;

@@ -14,7 +14,9 @@
 #include <lvfusion/metrics/ScanMetrics.h>
 #include <opencv2/imgproc.hpp>
 
+#include <array>
 #include <cstring>
+#include <limits>
 
 using namespace lvf;
 using lvf::simulation::CStereoLaserSimulator;
@@ -277,13 +279,14 @@ mrpt::obs::CObservation2DRangeScan oneDegreeScan(double step = 1.0)
 	return scan;
 }
 
-/** A visual point `range` m out, `offset` of a 1-degree bin left of bearing 0. */
-depth::VisualPoint pointAt(double range, double offset, float u = 320)
+/** A visual point `range` m out, `offset` of a 1-degree bin left of
+ * bearing 0, `height` m up. */
+depth::VisualPoint pointAt(double range, double offset, float u = 320, double height = 0.6)
 {
 	const double bearing = offset * M_PI / 180;
 	depth::VisualPoint p;
 	p.u = u;
-	p.robot = {range * std::cos(bearing), range * std::sin(bearing), 0.6};
+	p.robot = {range * std::cos(bearing), range * std::sin(bearing), height};
 	return p;
 }
 }  // namespace
@@ -340,6 +343,46 @@ TEST(ScanFusion, AnIsolatedNearestPointDoesNotSetTheRange)
 	// Every point chosen isolated (spread over the tolerance): their median.
 	const std::vector<depth::VisualPoint> spread{pointAt(1.90, 0.0), pointAt(1.97, 0.05), pointAt(2.04, -0.05)};
 	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, spread)[90], 1.97, 1e-3);
+}
+
+TEST(ScanFusion, AStandingSurfacesRangeLeansToItsMedianWithinTheNoise)
+{
+	// A box's face 3.00 m out, found from 0.3 to 0.9 m up, its two lowest
+	// points 5-7 cm too near (the matching noise's near tail, each
+	// supporting the other), each point's disparity fB / range with fB 60
+	// px m. The points chosen (the three nearest the bearing and the fourth
+	// within central_share of it) have the median 3.01 m. The range moves
+	// from the nearest, 2.93 m, toward it by at most standing_median_shift
+	// of disparity: 0.25 px, to 2.93 x 20.48 / 20.23 = 2.966 m.
+	const auto scan = oneDegreeScan();
+	constexpr double fB = 60;
+	const std::vector<std::array<double, 3>> face{
+		{2.93, 0.0, 0.3}, {2.95, 0.1, 0.5}, {3.01, -0.1, 0.7}, {3.02, -0.12, 0.9}};  // range, offset, height
+	std::vector<depth::VisualPoint> standing, lying, remembered;
+	for (const auto& [range, offset, height] : face)
+	{
+		standing.push_back(pointAt(range, offset, 320, height));
+		standing.back().disparity = static_cast<float>(fB / range);
+		lying.push_back(standing.back());
+		lying.back().robot.z() = 0.7;
+		remembered.push_back(standing.back());
+		remembered.back().disparity = std::numeric_limits<float>::quiet_NaN();
+	}
+	const double nearestDisparity = fB / 2.93;
+	fusion::ScanFusion::TOptions options;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, standing)[90],
+		2.93 * nearestDisparity / (nearestDisparity - 0.25), 1e-3);
+	// A whole pixel reaches the median itself; 0 keeps the nearest.
+	options.standingMedianShift = 1;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, standing)[90], 3.01, 1e-3);
+	options.standingMedianShift = 0;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, standing)[90], 2.93, 1e-3);
+	// The same ranges at one height are a lying surface, a table top seen
+	// from above, whose nearest point is its front edge; and remembered
+	// points, which carry no disparity, stay where they are.
+	options.standingMedianShift = 0.25;
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, lying)[90], 2.93, 1e-3);
+	EXPECT_NEAR(fusion::ScanFusion(options).visualRanges(scan, remembered)[90], 2.93, 1e-3);
 }
 
 TEST(ScanFusion, ABinWithTooFewPointsCountsItsNeighbours)

@@ -22,6 +22,7 @@ void ScanFusion::TOptions::loadFromConfigFile(
 	centreSlack = ini.real("centre_slack", centreSlack, -0.5, 0.5);
 	centralShare = ini.real("central_share", centralShare, 0, 0.5);
 	rangeSupport = ini.real("range_support", rangeSupport, 0, 10);
+	standingMedianShift = ini.real("standing_median_shift", standingMedianShift, 0, 10);
 	bridgeWidth = ini.real("bridge_width", bridgeWidth, 0, 10);
 	neighbourBins = ini.integer("neighbour_bins", neighbourBins, 0, 10);
 	binWidthDeg = ini.real("bin_width_deg", binWidthDeg, 0, 360);
@@ -36,13 +37,41 @@ void ScanFusion::TOptions::saveToConfigFile(
 	writeOption(c, s, "centre_slack", centreSlack, "and straddle the bin's bearing, give or take this fraction of a bin (negative: reach past it on both sides by that much)");
 	writeOption(c, s, "central_share", centralShare, "the bearing's range is the nearest of its cluster's min_points points nearest the bin's bearing, and of any others nearer it than this fraction of a bin; 0: off [0..0.5]");
 	writeOption(c, s, "range_support", rangeSupport, "that nearest point needs another point of the cluster within this much range of it (else the next one; all isolated: their median); 0: off [m]");
+	writeOption(c, s, "standing_median_shift", standingMedianShift, "on a standing surface (the cluster's points span more height than range) the range moves from that nearest point toward the median of the points it was chosen from, by at most this much disparity; a lying one (a table top) keeps its nearest point, its front edge; 0: the nearest everywhere [px]");
 	writeOption(c, s, "neighbour_bins", neighbourBins, "a bin with fewer than min_points points of its own may count those of the bins up to this many either side, some on each side (its own nearest point with such a cluster behind it sets the range); 0: off");
 	writeOption(c, s, "bin_width_deg", binWidthDeg, "a bearing's bin of visual points, centred on it, at least the laser's ray spacing: with a finer laser neighbouring bins overlap [deg]");
 	writeOption(c, s, "bridge_width", bridgeWidth, "close gaps in an edge at most this wide between two bearings whose ranges agree within cluster_tolerance, one of them set by vision: bearings between that are farther than both, and not placed by vision within cluster_tolerance of them, take the line between them; 0: off [m]");
 }
 
+namespace
+{
+/** The median range of [first, last) (reorders it). */
+template <typename It>
+float medianRange(It first, It last)
+{
+	const It median = first + (last - first) / 2;
+	std::nth_element(first, median, last, [](const auto& a, const auto& b) { return a.range < b.range; });
+	return median->range;
+}
+
+/** Whether a cluster's points span more height than range: a standing
+ * surface, seen at one range from bottom to top, rather than a lying one
+ * seen over a span of range at one height. */
+template <typename It>
+bool standsUp(It first, It last)
+{
+	const auto [lowest, highest] =
+		std::minmax_element(first, last, [](const auto& a, const auto& b) { return a.height < b.height; });
+	const auto [nearest, farthest] =
+		std::minmax_element(first, last, [](const auto& a, const auto& b) { return a.range < b.range; });
+	return highest->height - lowest->height >= farthest->range - nearest->range;
+}
+}  // namespace
+
 float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector<Hit>::iterator last) const
 {
+	// Whole-cluster figures first: the choice below reorders it.
+	const bool standing = m_options.standingMedianShift > 0 && standsUp(first, last);
 	// On a slanted face the points differ in range with bearing, so look at
 	// those nearest the bin's bearing: the min_points nearest, and any
 	// others nearer it than central_share of a bin.
@@ -57,14 +86,23 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 			return &o != &h && std::abs(o.range - h.range) <= m_options.rangeSupport;
 		});
 	};
-	float nearest = std::numeric_limits<float>::infinity();
+	float nearest = std::numeric_limits<float>::infinity(), nearestDisparity = 0;
 	for (auto it = first; it != chosenEnd; ++it)
-		if (m_options.rangeSupport <= 0 || supported(*it)) nearest = std::min(nearest, it->range);
-	if (std::isfinite(nearest)) return nearest;
+		if ((m_options.rangeSupport <= 0 || supported(*it)) && it->range < nearest)
+			nearest = it->range, nearestDisparity = it->disparity;
 	// All of them isolated (points spread over the tolerance): their median.
-	const auto median = first + (chosenEnd - first) / 2;
-	std::nth_element(first, median, chosenEnd, [](const Hit& a, const Hit& b) { return a.range < b.range; });
-	return median->range;
+	if (!std::isfinite(nearest)) return medianRange(first, chosenEnd);
+	if (!standing) return nearest;
+	// A standing surface lies at one range: toward the chosen points'
+	// median, away from the noise's near tail, but no farther than the
+	// nearest point's range at standing_median_shift less disparity (along
+	// its ray the range goes as 1 / disparity, nearly: it is measured from
+	// the laser, not the cameras). A remembered point has no disparity
+	// (NaN): it stays.
+	const auto shift = static_cast<float>(m_options.standingMedianShift);
+	if (!(nearestDisparity > shift)) return nearest;
+	const float bound = nearest * nearestDisparity / (nearestDisparity - shift);
+	return std::clamp(medianRange(first, chosenEnd), nearest, bound);
 }
 
 float ScanFusion::rangeWithNeighbours(const std::vector<Hit>& own, const std::vector<Hit>& around) const
@@ -103,7 +141,7 @@ void ScanFusion::hitsAround(const std::vector<std::vector<PlanePoint>>& byRay, s
 	for (long j = std::max(0L, std::lround(lo)); j <= std::min(last, std::lround(hi)); j++)
 		for (const PlanePoint& p : byRay[size_t(j)])
 			if (p.index >= lo && p.index < hi)
-				hits.push_back({p.range, static_cast<float>((p.index - double(i)) / binRays), p.atImageEdge});
+				hits.push_back({p.range, static_cast<float>((p.index - double(i)) / binRays), p.atImageEdge, p.height, p.disparity});
 }
 
 std::vector<std::vector<ScanFusion::PlanePoint>> ScanFusion::pointsUnderRays(
@@ -129,7 +167,8 @@ std::vector<std::vector<ScanFusion::PlanePoint>> ScanFusion::pointsUnderRays(
 		const double index = rayIndexOf(laser, std::atan2(y, x));
 		const long ray = std::lround(index);
 		if (ray < 0 || ray >= long(n)) continue;
-		onPlane[size_t(ray)].push_back({index, static_cast<float>(std::hypot(x, y)), atImageEdge(p.u)});
+		onPlane[size_t(ray)].push_back(
+			{index, static_cast<float>(std::hypot(x, y)), atImageEdge(p.u), static_cast<float>(p.robot.z()), p.disparity});
 	}
 	return onPlane;
 }

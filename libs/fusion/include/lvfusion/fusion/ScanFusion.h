@@ -66,6 +66,26 @@ class ScanFusion
 		 * 0.849 / 0.025, rooms 201-230 0.846 / 0.033 -> 0.841 / 0.025,
 		 * rooms 1-6 0.912 / 0.023 -> 0.901 / 0.017; 0.05 m: 0.850 / 0.027. */
 		double rangeSupport = 0.03;
+		/** On a standing surface -- a cluster whose points span more height
+		 * than range -- the range moves from that nearest point toward the
+		 * median of the points it was chosen from, by at most this much
+		 * disparity [px]; 0: the nearest everywhere. A box's face lies at one
+		 * range from bottom to top, and its nearest point is the near tail of
+		 * the matching noise (0.1-0.2 m too near 4 m out, where a quarter
+		 * pixel is 0.1 m). A lying surface, a table top seen from above
+		 * (points at one height over a span of range), keeps its nearest
+		 * point: its front edge. The bound keeps the move within the noise
+		 * of one match: on real, rounded objects the points' heights also
+		 * differ in range, and the nearest is the truth (Middlebury's median
+		 * range error with the median itself: Motorcycle 0.013 -> 0.022 m,
+		 * Recycle 0.035 -> 0.041 m; bounded by 0.25 px, 0.016 and 0.038 m).
+		 * A remembered point (no disparity) stays where it is. Measured
+		 * 2026-12-08 with lvf-fuse (recalled / phantom bearings, 0 -> 0.25):
+		 * seeded rooms 301-340 1610 / 100 -> 1606 / 87, 201-230 1492 / 69 ->
+		 * 1495 / 63, 60 rooms (1-6, ..., 91-96) 2594 / 124 -> 2589 / 106,
+		 * 401-440 (used for no choice) 1486 / 99 -> 1483 / 90; the variants
+		 * in measurements.md, session 55. */
+		double standingMedianShift = 0.25;
 		/** Gaps in an obstacle's edge at most this wide (arc length) are
 		 * closed (NarrowGapBridging.h); 0: off. Measured 2026-12-03 with
 		 * lvf-fuse (recall / phantom bearings, off -> 0.15 m): seeded rooms
@@ -141,14 +161,18 @@ class ScanFusion
 		float range;
 		float offset;  //!< bearing minus the bin's own bearing, in bin widths
 		bool atImageEdge;  //!< from the outermost searched columns
+		float height;  //!< in the robot frame [m]
+		float disparity;  //!< of its match [px]; NaN for a remembered point
 	};
 	/** A visual point on the laser's plane: its fractional ray index
-	 * (rayIndexOf), range, and whether it is at the searched image's edge. */
+	 * (rayIndexOf), range, whether it is at the searched image's edge, and
+	 * its height before the projection and its match's disparity. */
 	struct PlanePoint
 	{
 		double index;
 		float range;
 		bool atImageEdge;
+		float height, disparity;
 	};
 	/** The points on the laser's plane, each under the ray its bearing
 	 * rounds to (out of the scan's aperture: dropped). */
