@@ -32,16 +32,27 @@ void wholeImage(const cv::Mat1b& grey, int half, cv::Mat1f& mean, cv::Mat1f& dev
 	cv::sqrt(variance, deviation);
 }
 
-/** Adds (sign +1) or subtracts (-1) an image row to the column sums of
- * values and of squares. */
-LVF_VECTOR_CLONES void slideColumnSums(
-	const uint8_t* __restrict row, float sign, int width, float* __restrict sums, float* __restrict squares)
+/** Adds an image row to the column sums of values and of squares. */
+LVF_VECTOR_CLONES void addColumnSums(
+	const uint8_t* __restrict row, int width, float* __restrict sums, float* __restrict squares)
 {
 	for (int u = 0; u < width; u++)
 	{
 		const float value = row[u];
-		sums[u] += sign * value;
-		squares[u] += sign * (value * value);
+		sums[u] += value;
+		squares[u] += value * value;
+	}
+}
+
+/** Swaps row `out` of the column sums for row `in`, in one pass. */
+LVF_VECTOR_CLONES void exchangeColumnSums(const uint8_t* __restrict out, const uint8_t* __restrict in, int width,
+	float* __restrict sums, float* __restrict squares)
+{
+	for (int u = 0; u < width; u++)
+	{
+		const float entering = in[u], leaving = out[u];
+		sums[u] += entering - leaving;
+		squares[u] += entering * entering - leaving * leaving;
 	}
 }
 
@@ -97,8 +108,9 @@ void windowStatistics(const cv::Mat1b& image, int half, const RowGrid& rows, cv:
 			std::fill(columnSum.begin(), columnSum.end(), 0.f);
 			std::fill(columnSquares.begin(), columnSquares.end(), 0.f);
 		};
-		auto addRow = [&](int y, int direction) {
-			slideColumnSums(image.ptr<uint8_t>(y), static_cast<float>(direction), width, columnSum.data(), columnSquares.data());
+		auto addRow = [&](int y) { addColumnSums(image.ptr<uint8_t>(y), width, columnSum.data(), columnSquares.data()); };
+		auto exchangeRows = [&](int out, int in) {
+			exchangeColumnSums(image.ptr<uint8_t>(out), image.ptr<uint8_t>(in), width, columnSum.data(), columnSquares.data());
 		};
 		int previous = -1;
 		for (int v = firstRow; v < endRow; v += rows.step)
@@ -106,8 +118,9 @@ void windowStatistics(const cv::Mat1b& image, int half, const RowGrid& rows, cv:
 			if (!rows.isWanted(v)) continue;
 			// The column sums over rows v - half .. v + half, slid down from
 			// the previous wanted row's where the windows overlap (exact
-			// integers: the order of the additions does not matter).
-			lvf::common::slideWindowRows(previous, v, half, clear, addRow);
+			// integers: the order of the additions does not matter, and
+			// each swap's terms are exact too).
+			lvf::common::slideWindowRows(previous, v, half, clear, addRow, exchangeRows);
 			previous = v;
 			windowSumsOfRow(columnSum.data(), columnSquares.data(), half, width, windowSum.data(), windowSquares.data());
 			meansAndVariances(windowSum.data(), windowSquares.data(), half, width - 1 - half, scale, mean.ptr<float>(v), deviation.ptr<float>(v));

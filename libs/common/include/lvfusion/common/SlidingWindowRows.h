@@ -8,21 +8,21 @@ namespace lvf::common
 {
 /** Moves the (2 half + 1)-row window centred on row `from` (negative: no
  * window yet) to the one centred on `to`. Where the two overlap and `to`
- * lies below, calls add(y, -1) for each row that leaves and add(y, +1) for
- * each that enters; otherwise clear(), then add(y, +1) for every row of the
- * new window. Nothing when `to` is `from`. */
-template <typename Clear, typename Add>
-void slideWindowRows(int from, int to, int half, Clear clear, Add add)
+ * lies below, as many rows leave as enter: calls exchange(leaving,
+ * entering) for each pair, in one pass over the column sums instead of
+ * two; otherwise clear(), then add(y) for every row of the new window.
+ * Nothing when `to` is `from`. */
+template <typename Clear, typename Add, typename Exchange>
+void slideWindowRows(int from, int to, int half, Clear clear, Add add, Exchange exchange)
 {
 	if (to == from) return;
 	if (from >= 0 && to > from && to - from <= 2 * half)
 	{
-		for (int y = from - half; y < to - half; y++) add(y, -1);
-		for (int y = from + half + 1; y <= to + half; y++) add(y, +1);
+		for (int k = 0; k < to - from; k++) exchange(from - half + k, from + half + 1 + k);
 		return;
 	}
 	clear();
-	for (int y = to - half; y <= to + half; y++) add(y, +1);
+	for (int y = to - half; y <= to + half; y++) add(y);
 }
 
 }  // namespace lvf::common

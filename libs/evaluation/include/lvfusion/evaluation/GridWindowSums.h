@@ -45,7 +45,6 @@ class GridWindowSums
 
    private:
 	static constexpr int kQuantities = 6;
-	void addRow(int v, int sign);
 
 	const cv::Mat1b& m_left;
 	const cv::Mat1w& m_warped32;
