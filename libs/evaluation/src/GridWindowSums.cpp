@@ -22,13 +22,7 @@ enum Quantity
 	Bad
 };
 
-/** Adds one image row's values, squares and products to the column sums
- * (`out` null), or swaps the row `out` for it: 32-bit integers (for
- * windows up to 31 rows, 31 x 8160^2 < 2^31), in one loop GCC vectorises
- * (cloned for AVX2, whose eight-wide 32-bit multiplies the baseline's SSE2
- * lacks). A swap is one pass over the sums where a subtraction and an
- * addition were two: the model check's sliding of the sums took 0.30 ms a
- * frame instead of 0.36 (seeded rooms 301-320, timed in lvf-bench). */
+/** One image row of the three images the sums are taken over. */
 struct ImageRow
 {
 	const uint8_t* left;
@@ -36,6 +30,10 @@ struct ImageRow
 	const uint8_t* bad;
 };
 
+/** Adds one image row's values, squares and products to the column sums:
+ * 32-bit integers (for windows up to 31 rows, 31 x 8160^2 < 2^31), in one
+ * loop GCC vectorises (cloned for AVX2, whose eight-wide 32-bit multiplies
+ * the baseline's SSE2 lacks). */
 LVF_VECTOR_CLONES void accumulateRow(ImageRow in, int n, int32_t* __restrict l, int32_t* __restrict ll,
 	int32_t* __restrict w, int32_t* __restrict ww, int32_t* __restrict lw, int32_t* __restrict unverifiable)
 {
@@ -51,6 +49,10 @@ LVF_VECTOR_CLONES void accumulateRow(ImageRow in, int n, int32_t* __restrict l, 
 	}
 }
 
+/** The same for row `out` leaving and row `in` entering, in one pass where
+ * a subtraction and an addition were two: the model check's sliding of the
+ * sums took 0.30 ms a frame instead of 0.36 (seeded rooms 301-320, timed in
+ * lvf-bench). */
 LVF_VECTOR_CLONES void exchangeRow(ImageRow out, ImageRow in, int n, int32_t* __restrict l, int32_t* __restrict ll,
 	int32_t* __restrict w, int32_t* __restrict ww, int32_t* __restrict lw, int32_t* __restrict unverifiable)
 {

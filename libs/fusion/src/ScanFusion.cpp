@@ -70,8 +70,6 @@ bool standsUp(It first, It last)
 
 float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector<Hit>::iterator last) const
 {
-	// Whole-cluster figures first: the choice below reorders it.
-	const bool standing = m_options.standingMedianShift > 0 && standsUp(first, last);
 	// On a slanted face the points differ in range with bearing, so look at
 	// those nearest the bin's bearing: the min_points nearest, and any
 	// others nearer it than central_share of a bin.
@@ -92,15 +90,15 @@ float ScanFusion::rangeAlongTheRay(std::vector<Hit>::iterator first, std::vector
 			nearest = it->range, nearestDisparity = it->disparity;
 	// All of them isolated (points spread over the tolerance): their median.
 	if (!std::isfinite(nearest)) return medianRange(first, chosenEnd);
-	if (!standing) return nearest;
 	// A standing surface lies at one range: toward the chosen points'
 	// median, away from the noise's near tail, but no farther than the
 	// nearest point's range at standing_median_shift less disparity (along
 	// its ray the range goes as 1 / disparity, nearly: it is measured from
 	// the laser, not the cameras). A remembered point has no disparity
-	// (NaN): it stays.
+	// (NaN): it stays. The spans standsUp compares do not depend on the
+	// order the choice above left the cluster in.
 	const auto shift = static_cast<float>(m_options.standingMedianShift);
-	if (!(nearestDisparity > shift)) return nearest;
+	if (!(shift > 0 && nearestDisparity > shift) || !standsUp(first, last)) return nearest;
 	const float bound = nearest * nearestDisparity / (nearestDisparity - shift);
 	return std::clamp(medianRange(first, chosenEnd), nearest, bound);
 }
